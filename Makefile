@@ -1,0 +1,49 @@
+# PERIDYNAMICS_EXT front door. `make demo` and `make test` work on a fresh
+# Debian machine: they install missing packages and fetch LAMMPS's source.
+
+PDEXT_CACHE       ?= $(HOME)/.cache/pdext
+BUILD_DIR         ?= build
+JOBS              ?= $(shell nproc)
+LAMMPS_SOURCE_DIR ?=
+
+# ccache keeps compiled LAMMPS objects outside the work tree, so a fresh clone
+# recompiles nothing that did not change.
+export CCACHE_DIR      ?= $(PDEXT_CACHE)/ccache
+export CCACHE_BASEDIR  := $(CURDIR)
+export CCACHE_NOHASHDIR := 1
+
+LMP := $(BUILD_DIR)/lmp
+STAMP_SETUP := $(PDEXT_CACHE)/.setup-ok
+
+.PHONY: all setup build test demo bench validate clean
+
+all: build
+
+setup: $(STAMP_SETUP)
+$(STAMP_SETUP): tools/setup-deps.sh
+	./tools/setup-deps.sh
+	mkdir -p $(PDEXT_CACHE) && touch $@
+
+$(BUILD_DIR)/CMakeCache.txt: | $(STAMP_SETUP)
+	src="$(LAMMPS_SOURCE_DIR)"; \
+	[ -n "$$src" ] || src=$$(./tools/fetch-lammps.sh $(PDEXT_CACHE)); \
+	cmake -S . -B $(BUILD_DIR) -DLAMMPS_SOURCE_DIR="$$src" \
+	  -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache
+
+build: $(BUILD_DIR)/CMakeCache.txt
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+test: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+demo: build
+	./examples/impact-demo/run.sh $(LMP)
+
+bench: build
+	./bench/run.sh $(LMP)
+
+validate: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -L validate
+
+clean:
+	rm -rf $(BUILD_DIR)
