@@ -1,0 +1,67 @@
+#include "pd_bond_based.h"
+
+#include <math.h>
+#include <stddef.h>
+
+/* One loop body, inlined into specialized copies: the flags are constants at
+ * each call site, so no copy carries a branch it does not need. */
+static inline __attribute__((always_inline)) void
+pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat,
+         const int *restrict type, const double *restrict x,
+         const double *restrict vol, double *restrict f, pd_tally *tally,
+         const int weighted, const int tallied)
+{
+  const int nt = mat->ntypes;
+  for (int i = 0; i < b->nowner; i++) {
+    const int n = b->count[i];
+    if (!n) continue;
+    const int row = i * b->stride;
+    const double *restrict ci = mat->c + type[i] * nt;
+    const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
+    const double vi = vol[i];
+    double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+    for (int k = 0; k < n; k++) {
+      const int j = b->far[row + k];
+      const double r0 = b->len0[row + k];
+      const double dx = x[3 * j] - xi, dy = x[3 * j + 1] - yi, dz = x[3 * j + 2] - zi;
+      const double len = sqrt(dx * dx + dy * dy + dz * dz);
+      const double s = (len - r0) / r0;
+      double t = ci[type[j]] * s;
+      if (weighted) t *= b->weight[row + k];
+      const double tl = len > 0.0 ? t / len : 0.0;
+      const double vj = vol[j];
+      fxi += vj * tl * dx;
+      fyi += vj * tl * dy;
+      fzi += vj * tl * dz;
+      f[3 * j] -= vi * tl * dx;
+      f[3 * j + 1] -= vi * tl * dy;
+      f[3 * j + 2] -= vi * tl * dz;
+      if (tallied) {
+        const double w = 0.25 * t * s * r0;
+        tally->energy += w * (vj + vi);
+        if (tally->eatom) {
+          tally->eatom[i] += w * vj;
+          tally->eatom[j] += w * vi;
+        }
+        const double d[3] = {-dx, -dy, -dz};
+        pd_tally_virial(tally, d, -tl * vi * vj);
+      }
+    }
+    f[3 * i] += fxi;
+    f[3 * i + 1] += fyi;
+    f[3 * i + 2] += fzi;
+  }
+}
+
+void pd_pmb_forces(const pd_bond_view *b, const pd_pmb *mat, const int *type,
+                   const double *x, const double *vol, double *f, pd_tally *tally)
+{
+  const int weighted = b->weight != NULL;
+  if (tally) {
+    if (weighted) pmb_loop(b, mat, type, x, vol, f, tally, 1, 1);
+    else pmb_loop(b, mat, type, x, vol, f, tally, 0, 1);
+  } else {
+    if (weighted) pmb_loop(b, mat, type, x, vol, f, NULL, 1, 0);
+    else pmb_loop(b, mat, type, x, vol, f, NULL, 0, 0);
+  }
+}

@@ -1,0 +1,38 @@
+/* The bond arrays every kernel walks: each bond is stored once, at the atom
+ * that owns it, and visited once (Newton's third law gives the far end). */
+#ifndef PD_BONDS_H
+#define PD_BONDS_H
+
+typedef struct pd_bond_view {
+  int nowner;            /* atoms 0 .. nowner-1 may own bonds */
+  int stride;            /* row length of the per-atom bond tables */
+  const int *count;      /* count[i]: bonds owned by atom i */
+  const int *far;        /* far[i*stride + k]: local index of the far end */
+  const double *len0;    /* reference bond length |xi| */
+  const double *weight;  /* per-bond quadrature weight (influence x partial
+                            volume), or NULL when every weight is 1 */
+} pd_bond_view;
+
+/* Energy and virial, gathered only on steps that ask for them.
+ * energy: sum of per-atom energy densities (the PERI convention);
+ * virial: sum of (x_i - x_j) (x) F_ij with F_ij = V_i V_j (force state),
+ * a true force, so virial / box volume is a stress, as in PERI;
+ * eatom: per-atom energy density over owned and ghost atoms, or NULL. */
+typedef struct pd_tally {
+  double energy;
+  double virial[6];
+  double *eatom;
+} pd_tally;
+
+/* Add a bond's virial, fpair being the force on i per unit (x_i - x_j). */
+static inline void pd_tally_virial(pd_tally *t, const double d[3], double fpair)
+{
+  t->virial[0] += d[0] * d[0] * fpair;
+  t->virial[1] += d[1] * d[1] * fpair;
+  t->virial[2] += d[2] * d[2] * fpair;
+  t->virial[3] += d[0] * d[1] * fpair;
+  t->virial[4] += d[0] * d[2] * fpair;
+  t->virial[5] += d[1] * d[2] * fpair;
+}
+
+#endif

@@ -1,0 +1,46 @@
+/* Ordinary state-based solid with Seth-Hill bond strain of order m
+ * (T14 eq. 5.1); m = 1/2 is the linear peridynamic solid (LPS, T14 2.12-2.14).
+ *
+ * For an atom i with normalization N_i = d / m_i, where the weighted volume
+ * m_i = sum_bonds w V_other and w is the bond's weight, the energy density is
+ *   psi_i = lambda/2 theta_i^2 + mu N_i sum_bonds w eps^2 V_other,
+ *   theta_i = N_i sum_bonds w eps V_other,
+ * and a bond's force state, with A = lambda theta N and B = 2 mu N at each
+ * end, is t = (A_i + A_j + (B_i + B_j) eps) w d(eps)/d|Y|. */
+#ifndef PD_ORDINARY_H
+#define PD_ORDINARY_H
+
+#include "pd_bonds.h"
+
+/* Per-step work arrays over owned and ghost atoms. */
+typedef struct pd_ordinary_state {
+  double order;   /* Seth-Hill order m */
+  double *sum;    /* dilatation sums, before normalization */
+  const double *a;/* A = lambda theta N per atom */
+  const double *b;/* B = 2 mu N per atom */
+} pd_ordinary_state;
+
+/* Weighted volume m_i += w V_j and m_j += w V_i over every bond. */
+void pd_weighted_volume(const pd_bond_view *b, const double *vol, double *m);
+
+/* Dilatation sums: st->sum[i] += w eps V_j, st->sum[j] += w eps V_i.
+ * The caller zeroes st->sum over owned and ghost atoms and then sums the
+ * ghosts' share onto their owners. */
+void pd_ordinary_dilatation(const pd_bond_view *b, const pd_ordinary_state *st,
+                            const double *x, const double *vol);
+
+/* Force density on every bond end; with tally, the bond part of the energy
+ * (B/2 w eps^2 V_other at each end) and the virial. The dilatation part of
+ * the energy is per atom: see pd_ordinary_atom. */
+void pd_ordinary_forces(const pd_bond_view *b, const pd_ordinary_state *st,
+                        const double *x, const double *vol, double *f,
+                        pd_tally *tally);
+
+/* Per-atom state from the summed dilatation: theta, A, B and the
+ * dilatation part of the energy density, lambda/2 theta^2. */
+typedef struct pd_ordinary_atom_out {
+  double theta, a, b, energy;
+} pd_ordinary_atom_out;
+pd_ordinary_atom_out pd_ordinary_atom(double lambda, double mu, double norm, double sum);
+
+#endif

@@ -1,0 +1,62 @@
+#include "model.h"
+
+#include "pd_bond_based.h"
+#include "pd_ordinary.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static double total(const lattice *l, const double *psi)
+{
+  double e = 0.0;
+  for (int a = 0; a < l->natoms; a++) e += l->vol[a] * psi[a];
+  return e;
+}
+
+double pmb_eval(const lattice *l, double c, const double *x, double *f, double *psi_out)
+{
+  double *psi = calloc(l->natoms, sizeof(double));
+  memset(f, 0, sizeof(double) * 3 * l->natoms);
+  pd_bond_view v = lattice_view(l);
+  pd_pmb mat = {1, &c};
+  pd_tally t = {0};
+  t.eatom = psi;
+  pd_pmb_forces(&v, &mat, l->type, x, l->vol, f, &t);
+  const double e = total(l, psi);
+  if (psi_out) memcpy(psi_out, psi, sizeof(double) * l->natoms);
+  free(psi);
+  return e;
+}
+
+double ordinary_eval(const lattice *l, double lambda, double mu, double order,
+                     const double *x, double *f, double *psi_out, double *theta_out)
+{
+  const int n = l->natoms;
+  const int dim = l->natoms == l->n * l->n ? 2 : 3;
+  double *m = calloc(n, sizeof(double)), *sum = calloc(n, sizeof(double));
+  double *a = calloc(n, sizeof(double)), *b = calloc(n, sizeof(double));
+  double *psi = calloc(n, sizeof(double));
+  pd_bond_view v = lattice_view(l);
+  pd_weighted_volume(&v, l->vol, m);
+  pd_ordinary_state st = {order, sum, a, b};
+  pd_ordinary_dilatation(&v, &st, x, l->vol);
+  for (int i = 0; i < n; i++) {
+    const pd_ordinary_atom_out o = pd_ordinary_atom(lambda, mu, dim / m[i], sum[i]);
+    a[i] = o.a;
+    b[i] = o.b;
+    psi[i] = o.energy;
+    if (theta_out) theta_out[i] = o.theta;
+  }
+  memset(f, 0, sizeof(double) * 3 * n);
+  pd_tally t = {0};
+  t.eatom = psi;
+  pd_ordinary_forces(&v, &st, x, l->vol, f, &t);
+  const double e = total(l, psi);
+  if (psi_out) memcpy(psi_out, psi, sizeof(double) * n);
+  free(m);
+  free(sum);
+  free(a);
+  free(b);
+  free(psi);
+  return e;
+}

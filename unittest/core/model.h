@@ -1,0 +1,14 @@
+/* Whole-body evaluation of the core materials on a test lattice: forces and
+ * per-atom energy density, in the order a host (LAMMPS) calls the kernels. */
+#ifndef PD_TEST_MODEL_H
+#define PD_TEST_MODEL_H
+
+#include "lattice.h"
+
+/* Each returns the total energy in joules, sum_i V_i psi_i; f is the force
+ * density, psi (may be NULL) the per-atom energy density. */
+double pmb_eval(const lattice *l, double c, const double *x, double *f, double *psi);
+double ordinary_eval(const lattice *l, double lambda, double mu, double order,
+                     const double *x, double *f, double *psi, double *theta);
+
+#endif
