@@ -34,16 +34,16 @@ double ordinary_eval(const lattice *l, double lambda, double mu, double order,
   const int n = l->natoms;
   const int dim = l->natoms == l->n * l->n ? 2 : 3;
   double *m = calloc(n, sizeof(double)), *sum = calloc(n, sizeof(double));
-  double *a = calloc(n, sizeof(double)), *b = calloc(n, sizeof(double));
+  double *ab = calloc(2 * n, sizeof(double));
   double *psi = calloc(n, sizeof(double));
   pd_bond_view v = lattice_view(l);
   pd_weighted_volume(&v, l->vol, m);
-  pd_ordinary_state st = {order, sum, a, b};
+  pd_ordinary_state st = {order, sum, ab};
   pd_ordinary_dilatation(&v, &st, x, l->vol);
   for (int i = 0; i < n; i++) {
     const pd_ordinary_atom_out o = pd_ordinary_atom(lambda, mu, dim / m[i], sum[i]);
-    a[i] = o.a;
-    b[i] = o.b;
+    ab[2 * i] = o.a;
+    ab[2 * i + 1] = o.b;
     psi[i] = o.energy;
     if (theta_out) theta_out[i] = o.theta;
   }
@@ -55,8 +55,7 @@ double ordinary_eval(const lattice *l, double lambda, double mu, double order,
   if (psi_out) memcpy(psi_out, psi, sizeof(double) * n);
   free(m);
   free(sum);
-  free(a);
-  free(b);
+  free(ab);
   free(psi);
   return e;
 }

@@ -13,6 +13,10 @@ typedef struct pd_bond_view {
                             volume), or NULL when every weight is 1 */
 } pd_bond_view;
 
+/* Weighted volume over every bond, at both ends: m_i += w V_j, m_j += w V_i
+ * (w = 1 without weights: the family volume). */
+void pd_weighted_volume(const pd_bond_view *b, const double *vol, double *m);
+
 /* Energy and virial, gathered only on steps that ask for them.
  * energy: sum of per-atom energy densities (the PERI convention);
  * virial: sum of (x_i - x_j) (x) F_ij with F_ij = V_i V_j (force state),

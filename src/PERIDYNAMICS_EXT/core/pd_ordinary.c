@@ -36,19 +36,6 @@ static inline double bond_weight(const pd_bond_view *b, int idx)
   return b->weight ? b->weight[idx] : 1.0;
 }
 
-void pd_weighted_volume(const pd_bond_view *b, const double *vol, double *m)
-{
-  for (int i = 0; i < b->nowner; i++) {
-    const int row = i * b->stride;
-    for (int k = 0; k < b->count[i]; k++) {
-      const int j = b->far[row + k];
-      const double w = bond_weight(b, row + k);
-      m[i] += w * vol[j];
-      m[j] += w * vol[i];
-    }
-  }
-}
-
 static inline double bond_length(const double *restrict x, int i, int j, double d[3])
 {
   d[0] = x[3 * j] - x[3 * i];
@@ -94,13 +81,13 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
            const double *restrict x, const double *restrict vol,
            double *restrict f, pd_tally *tally, int kind, int tallied)
 {
-  const double *restrict a = st->a, *restrict bb = st->b;
+  const double *restrict ab = st->ab;
   const double m = st->order;
   for (int i = 0; i < b->nowner; i++) {
     const int n = b->count[i];
     if (!n) continue;
     const int row = i * b->stride;
-    const double ai = a[i], bi = bb[i], vi = vol[i];
+    const double ai = ab[2 * i], bi = ab[2 * i + 1], vi = vol[i];
     double fi[3] = {0.0, 0.0, 0.0};
     for (int k = 0; k < n; k++) {
       const int j = b->far[row + k];
@@ -109,7 +96,8 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
       const double len = bond_length(x, i, j, d);
       const double w = bond_weight(b, row + k);
       const double eps = bond_strain(kind, m, len, r0);
-      const double t = (ai + a[j] + (bi + bb[j]) * eps) * w *
+      const double bj = ab[2 * j + 1];
+      const double t = (ai + ab[2 * j] + (bi + bj) * eps) * w *
                        bond_strain_rate(kind, m, eps, len, r0);
       const double tl = len > 0.0 ? t / len : 0.0;
       const double vj = vol[j];
@@ -119,10 +107,10 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
       }
       if (tallied) {
         const double we2 = 0.5 * w * eps * eps;
-        tally->energy += we2 * (bi * vj + bb[j] * vi);
+        tally->energy += we2 * (bi * vj + bj * vi);
         if (tally->eatom) {
           tally->eatom[i] += we2 * bi * vj;
-          tally->eatom[j] += we2 * bb[j] * vi;
+          tally->eatom[j] += we2 * bj * vi;
         }
         const double dij[3] = {-d[0], -d[1], -d[2]};
         pd_tally_virial(tally, dij, -tl * vi * vj);

@@ -15,13 +15,9 @@
 /* Per-step work arrays over owned and ghost atoms. */
 typedef struct pd_ordinary_state {
   double order;   /* Seth-Hill order m */
-  double *sum;    /* dilatation sums, before normalization */
-  const double *a;/* A = lambda theta N per atom */
-  const double *b;/* B = 2 mu N per atom */
+  double *sum;     /* dilatation sums, before normalization */
+  const double *ab;/* per atom, interleaved: A = lambda theta N, B = 2 mu N */
 } pd_ordinary_state;
-
-/* Weighted volume m_i += w V_j and m_j += w V_i over every bond. */
-void pd_weighted_volume(const pd_bond_view *b, const double *vol, double *m);
 
 /* Dilatation sums: st->sum[i] += w eps V_j, st->sum[j] += w eps V_i.
  * The caller zeroes st->sum over owned and ghost atoms and then sums the

@@ -1,0 +1,392 @@
+/* ----------------------------------------------------------------------
+   PERIDYNAMICS_EXT: bond families of the pd/ pair styles.
+
+   Families are built once, from the reference positions x0, on the first
+   run. Each bond is stored at the end with the smaller tag and visited once.
+   Partners are kept as tags (for migration and restart) and turned into
+   local indices after every reneighboring, never per bond per step.
+------------------------------------------------------------------------- */
+
+#include "fix_pd_bonds.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "pair_pd.h"
+#include "pd_compat.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static constexpr int PER_ATOM_FIXED = 3;    // count, family and weighted volume
+
+// Which end stores a bond: the smaller tag when the tags' sum is even, the
+// larger when odd. Either rule stores each bond once; alternating keeps the
+// per-atom tables (padded to the longest row) about half full rather than
+// giving the first atom of a periodic lattice every one of its bonds.
+static inline bool owns_bond(tagint me, tagint other)
+{
+  return ((me + other) & 1) ? me > other : me < other;
+}
+
+FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), owner(nullptr),
+    use_weights(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
+    r0(nullptr), weight(nullptr), far(nullptr), nlost_local(0), list(nullptr),
+    comm_array(nullptr), comm_width(1)
+{
+  if (narg != 4) error->all(FLERR, "Illegal fix pd/bonds command: expected 'weights yes|no'");
+  if (strcmp(arg[3], "weights") == 0) use_weights = 1;
+  else if (strcmp(arg[3], "noweights") == 0) use_weights = 0;
+  else error->all(FLERR, "Illegal fix pd/bonds argument '{}': expected weights or noweights", arg[3]);
+
+  restart_global = 1;
+  restart_peratom = 1;
+  scalar_flag = 1;
+  global_freq = 1;
+  extscalar = 0;
+  stores_ids = 1;
+  comm_forward = 2;
+  comm_reverse = 2;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nmax; i++) npartner[i] = 0;
+}
+
+FixPDBonds::~FixPDBonds()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(npartner);
+  memory->destroy(partner);
+  memory->destroy(r0);
+  memory->destroy(weight);
+  memory->destroy(far);
+  memory->destroy(family_volume);
+  memory->destroy(weighted_volume);
+}
+
+int FixPDBonds::setmask()
+{
+  return POST_NEIGHBOR | MIN_POST_NEIGHBOR;
+}
+
+void FixPDBonds::init()
+{
+  if (!owner) error->all(FLERR, "Fix pd/bonds is created by a pd/ pair style; do not define it by hand");
+  if (!built) PDCompat::request_occasional_full(neighbor, this, instance_me);
+}
+
+void FixPDBonds::init_list(int, NeighList *ptr)
+{
+  list = ptr;
+}
+
+void FixPDBonds::setup_post_neighbor()
+{
+  if (!built) build_families();
+  else post_neighbor();
+}
+
+void FixPDBonds::post_neighbor()
+{
+  map_partners();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixPDBonds::build_families()
+{
+  neighbor->build_one(list);
+  const int nlocal = atom->nlocal;
+  const tagint *tag = atom->tag;
+  const int *type = atom->type;
+  double **x0 = atom->x0;
+
+  // a candidate becomes a bond if its reference distance is within the
+  // horizon; the pair is stored once (at its owner) and with one image only
+  // (closest_image walks the image chain from its head, the mapped atom)
+  auto reference_length = [&](int i, int j) {
+    if (!owns_bond(tag[i], tag[j]) || domain->closest_image(i, atom->map(tag[j])) != j) return -1.0;
+    double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+    domain->minimum_image(d[0], d[1], d[2]);
+    const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return r <= owner->horizon(type[i], type[j]) ? r : -1.0;
+  };
+
+  int mymax = 0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    int n = 0;
+    for (int jj = 0; jj < list->numneigh[i]; jj++)
+      if (reference_length(i, list->firstneigh[i][jj] & NEIGHMASK) >= 0.0) n++;
+    mymax = MAX(mymax, n);
+  }
+  MPI_Allreduce(&mymax, &maxpartner, 1, MPI_INT, MPI_MAX, world);
+  maxpartner = MAX(maxpartner, 1);
+  memory->destroy(partner);
+  memory->destroy(r0);
+  memory->destroy(weight);
+  memory->destroy(far);
+  grow_arrays(atom->nmax);
+
+  for (int i = 0; i < nlocal; i++) npartner[i] = 0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+      const double r = reference_length(i, j);
+      if (r < 0.0) continue;
+      const int k = npartner[i]++;
+      partner[i][k] = tag[j];
+      r0[i][k] = r;
+      if (use_weights) weight[i][k] = owner->bond_weight(type[i], type[j], r);
+    }
+  }
+  built = 1;
+  map_partners();
+  reference_sums();
+
+  bigint nbonds = 0, mybonds = 0;
+  for (int i = 0; i < nlocal; i++) mybonds += npartner[i];
+  MPI_Allreduce(&mybonds, &nbonds, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (comm->me == 0) {
+    const double bytes = sizeof(tagint) + sizeof(double) + sizeof(int) + (use_weights ? sizeof(double) : 0);
+    utils::logmesg(lmp,
+                   "pd/bonds: {} bonds, {:.2f} bonds per atom (each stored once), "
+                   "up to {} owned per atom, {:.0f} bytes per bond\n",
+                   nbonds, 2.0 * nbonds / MAX(atom->natoms, 1), maxpartner, bytes);
+  }
+}
+
+// Local indices of the far ends: the image closest to the owner, valid until
+// the next reneighboring (atoms move less than half the skin meanwhile).
+void FixPDBonds::map_partners()
+{
+  nowned = atom->nlocal;
+  for (int i = 0; i < nowned; i++)
+    for (int k = 0; k < npartner[i]; k++) {
+      const int j = atom->map(partner[i][k]);
+      if (j < 0) {
+        remove_bond(i, k--);
+        nlost_local++;
+        continue;
+      }
+      far[i][k] = domain->closest_image(i, j);
+    }
+}
+
+void FixPDBonds::remove_bond(int i, int k)
+{
+  const int last = --npartner[i];
+  partner[i][k] = partner[i][last];
+  r0[i][k] = r0[i][last];
+  far[i][k] = far[i][last];
+  if (use_weights) weight[i][k] = weight[i][last];
+}
+
+// Family volume and weighted volume of every atom, over both ends of each bond.
+void FixPDBonds::reference_sums()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) family_volume[i] = weighted_volume[i] = 0.0;
+  pd_bond_view v = view();
+  pd_weighted_volume(&v, atom->vfrac, weighted_volume);
+  v.weight = nullptr;
+  pd_weighted_volume(&v, atom->vfrac, family_volume);
+  sum_to_owners(weighted_volume);
+  sum_to_owners(family_volume);
+}
+
+pd_bond_view FixPDBonds::view() const
+{
+  pd_bond_view v;
+  v.nowner = nowned;
+  v.stride = maxpartner;
+  v.count = npartner;
+  v.far = far ? far[0] : nullptr;
+  v.len0 = r0 ? r0[0] : nullptr;
+  v.weight = use_weights && weight ? weight[0] : nullptr;
+  return v;
+}
+
+double FixPDBonds::compute_scalar()
+{
+  bigint total = 0;
+  MPI_Allreduce(&nlost_local, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  return (double) total;
+}
+
+double FixPDBonds::memory_usage()
+{
+  const double per_bond = sizeof(tagint) + sizeof(double) + sizeof(int) + (use_weights ? sizeof(double) : 0);
+  return (double) atom->nmax * (maxpartner * per_bond + sizeof(int) + 2 * sizeof(double));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixPDBonds::sum_to_owners(double *a, int width)
+{
+  comm_array = a;
+  comm_width = width;
+  PDCompat::reverse_comm(comm, this, width);
+}
+
+void FixPDBonds::copy_to_ghosts(double *a, int width)
+{
+  comm_array = a;
+  comm_width = width;
+  PDCompat::forward_comm(comm, this, width);
+}
+
+int FixPDBonds::pack_forward_comm(int n, int *list, double *buf, int, int *)
+{
+  int m = 0;
+  for (int i = 0; i < n; i++)
+    for (int w = 0; w < comm_width; w++) buf[m++] = comm_array[list[i] * comm_width + w];
+  return m;
+}
+
+void FixPDBonds::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int w = 0; w < comm_width; w++) comm_array[i * comm_width + w] = buf[m++];
+}
+
+int FixPDBonds::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int w = 0; w < comm_width; w++) buf[m++] = comm_array[i * comm_width + w];
+  return m;
+}
+
+void FixPDBonds::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int i = 0; i < n; i++)
+    for (int w = 0; w < comm_width; w++) comm_array[list[i] * comm_width + w] += buf[m++];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixPDBonds::grow_arrays(int nmax)
+{
+  memory->grow(npartner, nmax, "pd/bonds:npartner");
+  memory->grow(partner, nmax, maxpartner, "pd/bonds:partner");
+  memory->grow(r0, nmax, maxpartner, "pd/bonds:r0");
+  memory->grow(far, nmax, maxpartner, "pd/bonds:far");
+  if (use_weights) memory->grow(weight, nmax, maxpartner, "pd/bonds:weight");
+  memory->grow(family_volume, nmax, "pd/bonds:family_volume");
+  memory->grow(weighted_volume, nmax, "pd/bonds:weighted_volume");
+}
+
+void FixPDBonds::copy_arrays(int i, int j, int)
+{
+  npartner[j] = npartner[i];
+  for (int k = 0; k < npartner[i]; k++) {
+    partner[j][k] = partner[i][k];
+    r0[j][k] = r0[i][k];
+    if (use_weights) weight[j][k] = weight[i][k];
+  }
+  family_volume[j] = family_volume[i];
+  weighted_volume[j] = weighted_volume[i];
+}
+
+int FixPDBonds::per_atom_doubles(int i) const
+{
+  return PER_ATOM_FIXED + npartner[i] * (2 + use_weights);
+}
+
+// Layout shared by exchange and restart: count, family volume, weighted
+// volume, then per bond: tag, r0 [, weight].
+int FixPDBonds::pack_exchange(int i, double *buf)
+{
+  int m = 0;
+  buf[m++] = ubuf(npartner[i]).d;
+  buf[m++] = family_volume[i];
+  buf[m++] = weighted_volume[i];
+  for (int k = 0; k < npartner[i]; k++) {
+    buf[m++] = ubuf(partner[i][k]).d;
+    buf[m++] = r0[i][k];
+    if (use_weights) buf[m++] = weight[i][k];
+  }
+  return m;
+}
+
+int FixPDBonds::unpack_exchange(int i, double *buf)
+{
+  int m = 0;
+  npartner[i] = (int) ubuf(buf[m++]).i;
+  if (npartner[i] > maxpartner) error->one(FLERR, "Fix pd/bonds: atom arrived with more bonds than the tables hold");
+  family_volume[i] = buf[m++];
+  weighted_volume[i] = buf[m++];
+  for (int k = 0; k < npartner[i]; k++) {
+    partner[i][k] = (tagint) ubuf(buf[m++]).i;
+    r0[i][k] = buf[m++];
+    if (use_weights) weight[i][k] = buf[m++];
+  }
+  return m;
+}
+
+void FixPDBonds::write_restart(FILE *fp)
+{
+  double total_lost = compute_scalar();
+  if (comm->me == 0) {
+    double list[4] = {(double) built, (double) maxpartner, (double) use_weights, total_lost};
+    int size = sizeof(list);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), 4, fp);
+  }
+}
+
+void FixPDBonds::restart(char *buf)
+{
+  double *list = (double *) buf;
+  if ((int) list[2] != use_weights)
+    error->all(FLERR, "Fix pd/bonds: restart file bonds {} weights, the pair style now {}",
+               list[2] ? "carry" : "carry no", use_weights ? "needs them" : "does not");
+  built = (int) list[0];
+  maxpartner = (int) list[1];
+  // lost bonds are counted once, on rank 0, so the global sum carries over
+  nlost_local = comm->me == 0 ? (bigint) list[3] : 0;
+  memory->destroy(partner);
+  memory->destroy(r0);
+  memory->destroy(weight);
+  memory->destroy(far);
+  grow_arrays(atom->nmax);
+}
+
+int FixPDBonds::pack_restart(int i, double *buf)
+{
+  buf[0] = per_atom_doubles(i) + 1;
+  return pack_exchange(i, buf + 1) + 1;
+}
+
+void FixPDBonds::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  unpack_exchange(nlocal, &extra[nlocal][m + 1]);
+}
+
+int FixPDBonds::size_restart(int i)
+{
+  return per_atom_doubles(i) + 1;
+}
+
+int FixPDBonds::maxsize_restart()
+{
+  return PER_ATOM_FIXED + maxpartner * (2 + use_weights) + 1;
+}

@@ -1,0 +1,91 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDYNAMICS_EXT: the bond families of the pd/ pair styles.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(pd/bonds,FixPDBonds);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_PD_BONDS_H
+#define LMP_FIX_PD_BONDS_H
+
+#include "fix.h"
+
+extern "C" {
+#include "pd_bonds.h"
+}
+
+namespace LAMMPS_NS {
+
+class PairPD;
+
+class FixPDBonds : public Fix {
+ public:
+  FixPDBonds(class LAMMPS *, int, char **);
+  ~FixPDBonds() override;
+  int setmask() override;
+  void init() override;
+  void init_list(int, class NeighList *) override;
+  void setup_post_neighbor() override;
+  void post_neighbor() override;
+  void min_post_neighbor() override { post_neighbor(); }
+  double compute_scalar() override;
+  double memory_usage() override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+
+  void set_owner(PairPD *pair) { owner = pair; }
+  bool is_built() const { return built; }
+  pd_bond_view view() const;
+
+  // Sum a per-atom array's ghost entries onto their owners, or copy the
+  // owners' entries to their ghosts; 'width' doubles per atom, at most 2.
+  void sum_to_owners(double *a, int width = 1);
+  void copy_to_ghosts(double *a, int width = 1);
+
+  // per-atom reference family data, fixed when the families are built
+  double *family_volume;      // sum of the partners' volumes
+  double *weighted_volume;    // sum of weight x partner volume
+
+ private:
+  PairPD *owner;
+  int use_weights;         // 1 if bonds carry a quadrature weight
+  int built;               // families exist (set once, kept by restart)
+  int maxpartner;          // row length of the per-atom bond tables
+  int nowned;              // atoms whose local indices are current
+  int *npartner;           // bonds owned by each atom
+  tagint **partner;        // far end of each bond, as a global tag
+  double **r0;             // reference length
+  double **weight;         // quadrature weight (use_weights only)
+  int **far;               // far end as a local index (owned+ghost)
+  bigint nlost_local;      // bonds dropped because the partner was lost
+  class NeighList *list;
+  double *comm_array;
+  int comm_width;
+
+  void build_families();
+  void map_partners();
+  void reference_sums();
+  void remove_bond(int i, int k);
+  int per_atom_doubles(int i) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

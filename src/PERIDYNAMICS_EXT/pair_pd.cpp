@@ -1,0 +1,307 @@
+/* ----------------------------------------------------------------------
+   PERIDYNAMICS_EXT: common part of the pd/ material pair styles.
+------------------------------------------------------------------------- */
+
+#include "pair_pd.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_pd_bonds.h"
+#include "force.h"
+#include "lattice.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+extern "C" {
+#include "pd_influence.h"
+#include "pd_timestep.h"
+}
+
+using namespace LAMMPS_NS;
+
+static const char *const FIX_ID = "PD_BONDS";
+
+PairPD::PairPD(LAMMPS *lmp, const std::vector<std::string> &coef_names) :
+    Pair(lmp), names(coef_names), coef(nullptr), legacy(0), lattice_spacing(0.0), bonds(nullptr),
+    report_pending(0), work(nullptr), nwork(0)
+{
+  restartinfo = 1;
+  single_enable = 0;
+  no_virial_fdotr_compute = 1;
+  manybody_flag = 1;
+}
+
+PairPD::~PairPD()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    for (size_t p = 0; p < names.size(); p++) memory->destroy(coef[p]);
+    delete[] coef;
+  }
+  memory->destroy(work);
+}
+
+void PairPD::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  coef = new double **[names.size()];
+  for (size_t p = 0; p < names.size(); p++) {
+    memory->create(coef[p], n + 1, n + 1, "pair:coef");
+    for (int i = 0; i <= n; i++)
+      for (int j = 0; j <= n; j++) coef[p][i][j] = NAN;
+  }
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) setflag[i][j] = 0;
+}
+
+bool PairPD::given(int p, int i, int j) const
+{
+  return !std::isnan(coef[p][i][j]);
+}
+
+int PairPD::coef_index(const std::string &name) const
+{
+  for (size_t p = 0; p < names.size(); p++)
+    if (names[p] == name) return (int) p;
+  return -1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairPD::settings(int narg, char **arg)
+{
+  legacy = 0;
+  int iarg = 0;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "legacy") == 0) {
+      legacy = 1;
+      iarg++;
+      continue;
+    }
+    const int used = parse_setting(narg, arg, iarg);
+    if (!used) error->all(FLERR, "Pair style {}: unknown keyword '{}'", force->pair_style, arg[iarg]);
+    iarg += used;
+  }
+}
+
+int PairPD::parse_setting(int, char **, int)
+{
+  return 0;
+}
+
+void PairPD::coeff(int narg, char **arg)
+{
+  if (narg < 2) error->all(FLERR, "Incorrect args for pair coefficients");
+  if (!allocated) allocate();
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  int iarg = 2;
+  if (iarg < narg && parse_model(arg[iarg])) iarg++;
+  std::vector<double> values(names.size(), NAN);
+  for (; iarg < narg; iarg += 2) {
+    const int p = coef_index(arg[iarg]);
+    if (p < 0) {
+      std::string known;
+      for (auto &n : names) known += " " + n;
+      error->all(FLERR, "Pair {} coeff: unknown keyword '{}' (expected one of:{})", force->pair_style,
+                 arg[iarg], known);
+    }
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Pair {} coeff: keyword '{}' needs a value", force->pair_style, arg[iarg]);
+    values[p] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+  }
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      for (size_t p = 0; p < names.size(); p++) coef[p][i][j] = values[p];
+      check_coeff(i, j);
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+double PairPD::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0) {
+    // interface bonds: mean of the two materials (MS07 eq. 30), the larger horizon
+    for (size_t p = 0; p < names.size(); p++)
+      coef[p][i][j] = 0.5 * (coef[p][i][i] + coef[p][j][j]);
+    coef[0][i][j] = MAX(coef[0][i][i], coef[0][j][j]);
+  }
+  for (size_t p = 0; p < names.size(); p++) coef[p][j][i] = coef[p][i][j];
+  return horizon(i, j);
+}
+
+void PairPD::init_style()
+{
+  const std::string style = force->pair_style;
+  if (!atom->vfrac_flag || !atom->rmass_flag || !atom->x0)
+    error->all(FLERR, "Pair {} requires an atom style with per-atom volume, density and reference "
+                      "positions (atom_style peri)", style);
+  if (atom->map_style == Atom::MAP_NONE)
+    error->all(FLERR, "Pair {} requires an atom map: add 'atom_modify map array' before the box "
+                      "is created", style);
+  if (!force->newton_pair)
+    error->all(FLERR, "Pair {} stores each bond once and needs 'newton on' (the default)", style);
+
+  // every atom needs a volume; the horizon must reach past the spacing
+  double cutmax = 0.0, hmin = INFINITY;
+  for (int i = 1; i <= atom->ntypes; i++) {
+    hmin = MIN(hmin, horizon(i, i));
+    for (int j = i; j <= atom->ntypes; j++) cutmax = MAX(cutmax, horizon(i, j));
+  }
+  int bad = 0;
+  double spacing = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->vfrac[i] > 0.0)) bad = 1;
+    else spacing = MAX(spacing, cbrt(atom->vfrac[i]));
+  }
+  int anybad;
+  MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, world);
+  if (anybad)
+    error->all(FLERR, "Pair {}: some atoms have zero volume; set it with 'set ... volume'", style);
+  double maxspacing;
+  MPI_Allreduce(&spacing, &maxspacing, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (hmin < 1.01 * maxspacing)
+    error->all(FLERR, "Pair {}: horizon {} is not larger than the particle spacing {} (cube root of "
+               "the volume): families would have almost no bonds; use about 3 spacings", style,
+               hmin, maxspacing);
+  for (int d = 0; d < domain->dimension; d++)
+    if (domain->periodicity[d] && domain->prd[d] <= 2.0 * cutmax)
+      error->all(FLERR, "Pair {}: periodic box length {} is not larger than twice the horizon {}",
+                 style, domain->prd[d], cutmax);
+
+  if (legacy && lattice_spacing == 0.0) {
+    if (domain->lattice->style == Lattice::NONE)
+      error->all(FLERR, "Pair {} legacy reproduces PERI's partial volumes, which need the lattice "
+                 "spacing: define a lattice first (it is saved in restart files)", style);
+    if (domain->lattice->xlattice != domain->lattice->ylattice ||
+        domain->lattice->xlattice != domain->lattice->zlattice)
+      error->all(FLERR, "Pair {} legacy needs a lattice with equal spacing in x, y and z", style);
+    lattice_spacing = domain->lattice->xlattice;
+  }
+
+  int ifix = modify->find_fix(FIX_ID);
+  if (ifix < 0) {
+    modify->add_fix(fmt::format("{} all pd/bonds {}", FIX_ID, uses_weights() ? "weights" : "noweights"));
+    ifix = modify->find_fix(FIX_ID);
+  }
+  bonds = dynamic_cast<FixPDBonds *>(modify->fix[ifix]);
+  if (!bonds) error->all(FLERR, "Fix ID {} is taken by a fix that is not pd/bonds", FIX_ID);
+  bonds->set_owner(this);
+  report_pending = 1;
+}
+
+double PairPD::bond_weight(int itype, int jtype, double r) const
+{
+  return legacy ? pd_partial_volume_legacy(r, horizon(itype, jtype), lattice_spacing) : 1.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairPD::grow_work()
+{
+  if (atom->nmax > nwork) {
+    nwork = atom->nmax;
+    memory->destroy(work);
+    memory->create(work, 2 * nwork, "pair:work");
+  }
+}
+
+void PairPD::tally(const pd_tally &t)
+{
+  if (eflag_global) eng_vdwl += t.energy;
+  if (vflag_global)
+    for (int k = 0; k < 6; k++) virial[k] += t.virial[k];
+}
+
+// Horizon and stable time step (MS07 eq. 43), once per run, in the log.
+void PairPD::report_setup()
+{
+  report_pending = 0;
+  grow_work();
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) work[i] = 0.0;
+  stable_dt_sum(work);
+  bonds->sum_to_owners(work);
+  double dtmin = INFINITY;
+  for (int i = 0; i < atom->nlocal; i++) dtmin = MIN(dtmin, pd_stable_dt(atom->rmass[i], work[i]));
+  double dt;
+  MPI_Allreduce(&dtmin, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (comm->me == 0) {
+    std::string hs;
+    for (int i = 1; i <= atom->ntypes; i++) hs += fmt::format(" {}", horizon(i, i));
+    utils::logmesg(lmp, "{}: horizon{}{}; stable time step estimate (MS07 eq. 43) {:.6g}, "
+                   "timestep {:.6g} is {:.3f} of it\n", force->pair_style, hs,
+                   legacy ? " (legacy PERI mode)" : "", dt, update->dt, update->dt / dt);
+    report_extra();
+  }
+  if (update->dt > dt)
+    error->warning(FLERR, "Pair {}: timestep {} exceeds the stable estimate {}", force->pair_style,
+                   update->dt, dt);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairPD::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j])
+        for (size_t p = 0; p < names.size(); p++) fwrite(&coef[p][i][j], sizeof(double), 1, fp);
+    }
+}
+
+void PairPD::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (setflag[i][j])
+        for (size_t p = 0; p < names.size(); p++) {
+          if (me == 0) utils::sfread(FLERR, &coef[p][i][j], sizeof(double), 1, fp, nullptr, error);
+          MPI_Bcast(&coef[p][i][j], 1, MPI_DOUBLE, 0, world);
+        }
+    }
+}
+
+void PairPD::write_restart_settings(FILE *fp)
+{
+  fwrite(&legacy, sizeof(int), 1, fp);
+  fwrite(&lattice_spacing, sizeof(double), 1, fp);
+}
+
+void PairPD::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &legacy, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &lattice_spacing, sizeof(double), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&legacy, 1, MPI_INT, 0, world);
+  MPI_Bcast(&lattice_spacing, 1, MPI_DOUBLE, 0, world);
+}
+
+double PairPD::memory_usage()
+{
+  return 2.0 * nwork * sizeof(double);
+}

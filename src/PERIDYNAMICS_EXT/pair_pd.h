@@ -1,0 +1,73 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDYNAMICS_EXT: what every pd/ material pair style shares: per type
+   pair coefficients given as keyword/value pairs, the bond store (fix
+   pd/bonds), restart, energy/virial tally and the setup report.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PAIR_PD_H
+#define LMP_PAIR_PD_H
+
+#include "pair.h"
+
+#include <string>
+#include <vector>
+
+extern "C" {
+#include "pd_bonds.h"
+}
+
+namespace LAMMPS_NS {
+
+class FixPDBonds;
+
+class PairPD : public Pair {
+ public:
+  // coef_names[0] must be "horizon"
+  PairPD(class LAMMPS *, const std::vector<std::string> &coef_names);
+  ~PairPD() override;
+
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  double memory_usage() override;
+
+  double horizon(int itype, int jtype) const { return coef[0][itype][jtype]; }
+  // quadrature weight of a new bond (used only when uses_weights())
+  virtual double bond_weight(int itype, int jtype, double r) const;
+  FixPDBonds *bond_store() const { return bonds; }
+
+ protected:
+  std::vector<std::string> names;
+  double ***coef;           // coef[p][i][j] for names[p]; NaN when not given
+  int legacy;               // reproduce legacy PERI (partial volumes, ...)
+  double lattice_spacing;   // legacy partial volumes need it (0: not yet known)
+  FixPDBonds *bonds;
+  int report_pending;       // print the setup report at the next compute
+  double *work;             // per-atom scratch, 2 doubles per atom
+  int nwork;
+
+  // style hooks
+  virtual int parse_setting(int narg, char **arg, int iarg);    // returns args used, 0 if unknown
+  virtual int parse_model(const char *) { return 0; }           // leading model word in pair_coeff
+  virtual void check_coeff(int i, int j) = 0;                   // complete/validate one pair
+  virtual int uses_weights() const { return legacy; }
+  virtual void stable_dt_sum(double *sum) = 0;    // add stiffness sums over nall
+  virtual void report_extra() {}
+
+  void allocate();
+  double value(int p, int i, int j) const { return coef[p][i][j]; }
+  bool given(int p, int i, int j) const;
+  int coef_index(const std::string &name) const;
+  void grow_work();
+  void tally(const pd_tally &t);
+  void report_setup();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

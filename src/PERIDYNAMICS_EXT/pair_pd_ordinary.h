@@ -1,0 +1,49 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDYNAMICS_EXT: pair_style pd/ordinary, ordinary state-based solid
+   with Seth-Hill bond strain of order m (m = 1/2: LPS).
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(pd/ordinary,PairPDOrdinary);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_PD_ORDINARY_H
+#define LMP_PAIR_PD_ORDINARY_H
+
+#include "pair_pd.h"
+
+namespace LAMMPS_NS {
+
+class PairPDOrdinary : public PairPD {
+ public:
+  PairPDOrdinary(class LAMMPS *);
+  ~PairPDOrdinary() override;
+  void compute(int, int) override;
+  void init_style() override;
+  double bond_weight(int, int, double) const override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void *extract(const char *, int &) override;
+
+ protected:
+  int influence;       // pd_influence_kind
+  double order;        // Seth-Hill order m, the same for all types
+  double *theta;       // dilatation of owned atoms
+  double *abstate;     // per atom A = lambda theta N, B = 2 mu N (owned + ghost)
+  int nmax;
+
+  int parse_setting(int, char **, int) override;
+  void check_coeff(int, int) override;
+  int uses_weights() const override { return 1; }
+  void stable_dt_sum(double *) override;
+  void report_extra() override;
+  void grow_state();
+  double norm(int i) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
