@@ -1,0 +1,131 @@
+"""Drive build/lmp from Python for the LAMMPS-level tests.
+
+Every check prints PASS/FAIL with its tolerance; finish() prints the
+'N passed, N failed' line and sets the exit status."""
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+LMP = os.environ.get("PDEXT_LMP") or os.path.join(os.path.dirname(__file__), "../../build/lmp")
+LMP = os.path.abspath(LMP)
+_counts = {"pass": 0, "fail": 0}
+MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl_vader_single_copy_mechanism="none")
+
+
+def workdir():
+    return tempfile.mkdtemp(prefix="pdtest-")
+
+
+def run(script, cwd, ranks=1, expect_error=False, variables=None, name="in.test"):
+    """Run an input script; returns (stdout+stderr, thermo rows of the last run)."""
+    path = os.path.join(cwd, name)
+    with open(path, "w") as f:
+        f.write(script)
+    cmd = [LMP, "-in", name, "-echo", "none", "-log", name + ".log"]
+    for k, v in (variables or {}).items():
+        cmd += ["-var", k, str(v)]
+    if ranks > 1:
+        cmd = ["mpirun", "-np", str(ranks)] + cmd
+    p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, env=MPI_ENV, timeout=900)
+    out = p.stdout + p.stderr
+    if p.returncode != 0 and not expect_error:
+        print(out[-3000:])
+        raise RuntimeError(f"lmp failed ({p.returncode}) in {cwd}")
+    return out, thermo(out)
+
+
+def thermo(out):
+    """Rows (dicts) of every thermo block in the output, last block last."""
+    rows, header = [], None
+    for line in out.splitlines():
+        w = line.split()
+        if w and w[0] == "Step":
+            header, rows = w, []
+        elif header and len(w) == len(header):
+            try:
+                rows.append(dict(zip(header, map(float, w))))
+            except ValueError:
+                header = None
+        elif w[:2] == ["Loop", "time"]:
+            header = None
+    return rows
+
+
+def read_dump(path):
+    """{id: [values...]} from a text dump with one ITEM: ATOMS block."""
+    lines = open(path).read().splitlines()
+    start = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+    return {int(l.split()[0]): [float(v) for v in l.split()[1:]] for l in lines[start + 1:] if l.strip()}
+
+
+def max_rel_diff(a, b):
+    """Largest difference between two dumps, relative to their largest value."""
+    if set(a) != set(b):
+        return math.inf
+    diff = max(abs(x - y) for k in a for x, y in zip(a[k], b[k]))
+    scale = max(abs(x) for k in a for x in a[k])
+    return diff / scale
+
+
+def check(what, ok, detail=""):
+    print(("PASS " if ok else "FAIL ") + what + (f"  ({detail})" if detail else ""))
+    _counts["pass" if ok else "fail"] += 1
+
+
+def check_le(what, value, limit, reason=""):
+    check(what, value <= limit, f"{value:.3g} <= {limit:.3g}" + (f"; {reason}" if reason else ""))
+
+
+def log_value(out, pattern):
+    m = re.search(pattern, out)
+    return float(m.group(1)) if m else math.nan
+
+
+def finish():
+    print(f"{_counts['pass']} passed, {_counts['fail']} failed")
+    sys.exit(1 if _counts["fail"] else 0)
+
+
+# The benchmark and parity block (issue 2): simple cubic, spacing 5e-4,
+# horizon 3 spacings, K = 14.9 GPa, density 2200, volume 1.25e-10.
+SPACING, HORIZON, BULK, DENSITY, VOLUME = 0.0005, 0.0015001, 14.9e9, 2200.0, 1.25e-10
+MICROMODULUS = 18 * BULK / (math.pi * HORIZON ** 4)
+SHEAR = 0.6 * BULK   # nu = 1/4
+
+
+def block(n, boundary="p p p"):
+    return f"""units si
+boundary {boundary}
+atom_style peri
+atom_modify map array
+lattice sc {SPACING}
+region box block 0 {n} 0 {n} 0 {n}
+create_box 1 box
+create_atoms 1 box
+set group all density {DENSITY}
+set group all volume {VOLUME}
+"""
+
+
+# A rough velocity field (amplitude 0.5 m/s, strains ~1e-4), the same for
+# any rank count because it depends on atom IDs only.
+ROUGH_VELOCITY = """variable vx atom 0.5*sin(12.9898*id)
+variable vy atom 0.5*sin(78.233*id)
+variable vz atom 0.5*sin(37.719*id)
+velocity all set v_vx v_vy v_vz units box
+"""
+
+PAIRS = {
+    "peri/pmb": f"pair_style peri/pmb\npair_coeff * * {MICROMODULUS!r} {HORIZON} 1.0 0.0\n",
+    "pd/bond legacy": f"pair_style pd/bond legacy\npair_coeff * * pmb c {MICROMODULUS!r} horizon {HORIZON}\n",
+    "pd/bond": f"pair_style pd/bond\npair_coeff * * pmb K {BULK} horizon {HORIZON}\n",
+    "peri/lps": f"pair_style peri/lps\npair_coeff * * {BULK} {SHEAR} {HORIZON} 1.0 0.0\n",
+    "pd/ordinary legacy": f"pair_style pd/ordinary legacy\npair_coeff * * K {BULK} G {SHEAR} horizon {HORIZON} m 0.5\n",
+    "pd/ordinary": f"pair_style pd/ordinary\npair_coeff * * K {BULK} G {SHEAR} horizon {HORIZON} m 0.5\n",
+}
+
+DUMP = "write_dump all custom {file} id x y z modify sort id format float %.17g\n"

@@ -1,0 +1,21 @@
+"""Restart continuation (issue 2): 'run 100' twice in one process, and
+'run 100', write_restart, a new process, read_restart, 'run 100', end at
+bitwise the same positions on the same rank count. No lattice command and
+no pair_style after the restart: the pair style, its coefficients, the
+families and (legacy) the lattice spacing all come from the file."""
+from lmptest import *
+
+d = workdir()
+# uniform drift so atoms cross the periodic boundary and get re-sorted
+MOTION = ROUGH_VELOCITY + "velocity all set 40.0 NULL NULL sum yes units box\n"
+STEPS = "fix 1 all nve\ntimestep 1.0e-7\nthermo 50\n"
+for style in ["pd/bond legacy", "pd/ordinary"]:
+    tag = style.replace(" ", "_").replace("/", "_")
+    run(block(12) + MOTION + PAIRS[style] + STEPS + "run 100\nrun 100\n" + DUMP.format(file="one." + tag), d)
+    run(block(12) + MOTION + PAIRS[style] + STEPS + f"run 100\nwrite_restart restart.{tag}\n", d)
+    out, _ = run(f"read_restart restart.{tag}\nfix 1 all nve\nthermo 50\nrun 100\n" +
+                 DUMP.format(file="two." + tag), d)
+    check(f"{style}: no families rebuilt after read_restart", "pd/bonds:" not in out)
+    diff = max_rel_diff(read_dump(f"{d}/one.{tag}"), read_dump(f"{d}/two.{tag}"))
+    check(f"{style}: restarted run ends at bitwise the same positions", diff == 0.0, f"max rel diff {diff:.3g}")
+finish()
