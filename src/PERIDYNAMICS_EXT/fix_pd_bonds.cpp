@@ -25,7 +25,7 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-static constexpr int PER_ATOM_FIXED = 3;    // count, family and weighted volume
+static constexpr int PER_ATOM_FIXED = 4;    // count, own tag, family and weighted volume
 
 // Which end stores a bond: the smaller tag when the tags' sum is even, the
 // larger when odd. Either rule stores each bond once; alternating keeps the
@@ -37,7 +37,7 @@ static inline bool owns_bond(tagint me, tagint other)
 }
 
 FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), owner(nullptr),
+    Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), owner(nullptr), built_tag(nullptr),
     use_weights(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
     r0(nullptr), weight(nullptr), far(nullptr), nlost_local(0), list(nullptr),
     comm_array(nullptr), comm_width(1)
@@ -53,13 +53,14 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extscalar = 0;
   stores_ids = 1;
+  create_attribute = 1;
   comm_forward = 2;
   comm_reverse = 2;
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nmax; i++) npartner[i] = 0;
+  for (int i = 0; i < atom->nmax; i++) set_arrays(i);
 }
 
 FixPDBonds::~FixPDBonds()
@@ -73,6 +74,7 @@ FixPDBonds::~FixPDBonds()
   memory->destroy(far);
   memory->destroy(family_volume);
   memory->destroy(weighted_volume);
+  memory->destroy(built_tag);
 }
 
 int FixPDBonds::setmask()
@@ -94,7 +96,26 @@ void FixPDBonds::init_list(int, NeighList *ptr)
 void FixPDBonds::setup_post_neighbor()
 {
   if (!built) build_families();
-  else post_neighbor();
+  else {
+    map_partners();
+    check_identities();
+  }
+}
+
+// Between runs, commands can renumber atoms (delete_atoms with compress
+// yes, reset_atom_ids): the stored partner tags would then name other atoms.
+// Each atom carries the tag it had when the families were built.
+void FixPDBonds::check_identities()
+{
+  int bad = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (built_tag[i] && built_tag[i] != atom->tag[i]) bad = 1;
+  int anybad;
+  MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, world);
+  if (anybad)
+    error->all(FLERR, "Fix pd/bonds: atom IDs changed since the bond families were built "
+               "(e.g. by 'delete_atoms ... compress yes' or reset_atom_ids), so stored partners "
+               "would name other atoms; use 'delete_atoms ... compress no'");
 }
 
 void FixPDBonds::post_neighbor()
@@ -139,7 +160,10 @@ void FixPDBonds::build_families()
   memory->destroy(far);
   grow_arrays(atom->nmax);
 
-  for (int i = 0; i < nlocal; i++) npartner[i] = 0;
+  for (int i = 0; i < nlocal; i++) {
+    npartner[i] = 0;
+    built_tag[i] = tag[i];
+  }
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -229,7 +253,7 @@ double FixPDBonds::compute_scalar()
 double FixPDBonds::memory_usage()
 {
   const double per_bond = sizeof(tagint) + sizeof(double) + sizeof(int) + (use_weights ? sizeof(double) : 0);
-  return (double) atom->nmax * (maxpartner * per_bond + sizeof(int) + 2 * sizeof(double));
+  return (double) atom->nmax * (maxpartner * per_bond + sizeof(int) + sizeof(tagint) + 2 * sizeof(double));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -289,6 +313,7 @@ void FixPDBonds::grow_arrays(int nmax)
   if (use_weights) memory->grow(weight, nmax, maxpartner, "pd/bonds:weight");
   memory->grow(family_volume, nmax, "pd/bonds:family_volume");
   memory->grow(weighted_volume, nmax, "pd/bonds:weighted_volume");
+  memory->grow(built_tag, nmax, "pd/bonds:built_tag");
 }
 
 void FixPDBonds::copy_arrays(int i, int j, int)
@@ -301,6 +326,15 @@ void FixPDBonds::copy_arrays(int i, int j, int)
   }
   family_volume[j] = family_volume[i];
   weighted_volume[j] = weighted_volume[i];
+  built_tag[j] = built_tag[i];
+}
+
+// Atoms created after the families were built join without bonds.
+void FixPDBonds::set_arrays(int i)
+{
+  npartner[i] = 0;
+  built_tag[i] = 0;
+  family_volume[i] = weighted_volume[i] = 0.0;
 }
 
 int FixPDBonds::per_atom_doubles(int i) const
@@ -308,12 +342,13 @@ int FixPDBonds::per_atom_doubles(int i) const
   return PER_ATOM_FIXED + npartner[i] * (2 + use_weights);
 }
 
-// Layout shared by exchange and restart: count, family volume, weighted
-// volume, then per bond: tag, r0 [, weight].
+// Layout shared by exchange and restart: count, own tag at build, family
+// volume, weighted volume, then per bond: tag, r0 [, weight].
 int FixPDBonds::pack_exchange(int i, double *buf)
 {
   int m = 0;
   buf[m++] = ubuf(npartner[i]).d;
+  buf[m++] = ubuf(built_tag[i]).d;
   buf[m++] = family_volume[i];
   buf[m++] = weighted_volume[i];
   for (int k = 0; k < npartner[i]; k++) {
@@ -329,6 +364,7 @@ int FixPDBonds::unpack_exchange(int i, double *buf)
   int m = 0;
   npartner[i] = (int) ubuf(buf[m++]).i;
   if (npartner[i] > maxpartner) error->one(FLERR, "Fix pd/bonds: atom arrived with more bonds than the tables hold");
+  built_tag[i] = (tagint) ubuf(buf[m++]).i;
   family_volume[i] = buf[m++];
   weighted_volume[i] = buf[m++];
   for (int k = 0; k < npartner[i]; k++) {

@@ -36,6 +36,7 @@ class FixPDBonds : public Fix {
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
   void write_restart(FILE *) override;
@@ -64,6 +65,7 @@ class FixPDBonds : public Fix {
 
  private:
   PairPD *owner;
+  tagint *built_tag;       // each atom's own tag when the families were built (0: none)
   int use_weights;         // 1 if bonds carry a quadrature weight
   int built;               // families exist (set once, kept by restart)
   int maxpartner;          // row length of the per-atom bond tables
@@ -80,6 +82,7 @@ class FixPDBonds : public Fix {
 
   void build_families();
   void map_partners();
+  void check_identities();
   void reference_sums();
   void remove_bond(int i, int k);
   int per_atom_doubles(int i) const;

@@ -1,0 +1,60 @@
+/* ----------------------------------------------------------------------
+   PERIDYNAMICS_EXT: compute pd/damage (MS07 eq. 25):
+   phi = 1 - (volume of intact partners) / (volume of the reference family).
+------------------------------------------------------------------------- */
+
+#include "compute_pd_damage.h"
+
+#include "atom.h"
+#include "error.h"
+#include "fix_pd_bonds.h"
+#include "memory.h"
+#include "pd_modify_lookup.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+ComputePDDamage::ComputePDDamage(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), nmax(0), damage(nullptr), bonds(nullptr)
+{
+  if (narg != 3) error->all(FLERR, "Illegal compute pd/damage command: it takes no arguments");
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+}
+
+ComputePDDamage::~ComputePDDamage()
+{
+  memory->destroy(damage);
+}
+
+void ComputePDDamage::init()
+{
+  bonds = find_bond_store(lmp, "compute pd/damage");
+}
+
+void ComputePDDamage::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(damage);
+    memory->create(damage, nmax, "pd/damage:damage");
+    vector_atom = damage;
+  }
+  if (!bonds->is_built()) error->all(FLERR, "Compute pd/damage: bond families are built by the first run");
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) damage[i] = 0.0;
+  pd_bond_view v = bonds->view();
+  v.weight = nullptr;
+  pd_weighted_volume(&v, atom->vfrac, damage);    // intact family volume
+  bonds->sum_to_owners(damage);
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double all = bonds->family_volume[i];
+    damage[i] = (all > 0.0 && (atom->mask[i] & groupbit)) ? 1.0 - damage[i] / all : 0.0;
+  }
+}
+
+double ComputePDDamage::memory_usage()
+{
+  return (double) nmax * sizeof(double);
+}
