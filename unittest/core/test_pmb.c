@@ -2,6 +2,7 @@
 #include "check.h"
 #include "common.h"
 #include "model.h"
+#include "pd_bond_based.h"
 #include "pd_params.h"
 
 #include <stdlib.h>
@@ -84,6 +85,46 @@ int main(void)
     check_momentum("PMB, unequal volumes", &l, x, eval_pmb, &c);
     lattice_free(&l);
     free(x);
+  }
+  /* Microplastic bonds (MS07 eq. 19-21): one bond of two unit-volume points
+   * stretched to 3 sy and released. The force saturates at c sy, the bond
+   * keeps a permanent stretch of 2 sy, and the plastic work is c sy 2 sy |xi|
+   * per unit volume pair (half attributed to each end). With a huge yield
+   * stretch the kernel is the PMB kernel, bit for bit. */
+  {
+    lattice l = lattice_make(3, 2, h, 1.0001 * h, -1);
+    l.natoms = 2; /* the first two points of the row: one bond */
+    l.count[1] = 0;
+    l.count[0] = 1;
+    for (int a = 0; a < 2; a++) l.vol[a] = 1.0;
+    const double c = 1e20, sy = 1e-3, big = 1e300;
+    double plastic = 0.0, x[6] = {0, 0, 0, h, 0, 0}, f[6];
+    pd_bond_view v = lattice_view(&l);
+    pd_pmb mat = {1, &c};
+    pd_microplastic mp = {&sy, &plastic, 0.0};
+    const double stretches[] = {1e-3, 2e-3, 3e-3, 2e-3, 0.0};
+    double force[5];
+    for (int k = 0; k < 5; k++) {
+      x[3] = h * (1.0 + stretches[k]);
+      for (int q = 0; q < 6; q++) f[q] = 0.0;
+      pd_microplastic_forces(&v, &mat, &mp, l.type, x, l.vol, f, NULL);
+      force[k] = f[0];
+    }
+    check_rel("microplastic: force at yield is c sy", force[0], c * sy, 1e-9);
+    check_rel("microplastic: force saturates at c sy beyond yield", force[2], c * sy, 1e-9);
+    check_rel("microplastic: unloading by sy is elastic (force 0)", 1.0 + force[3] / (c * sy), 1.0, 1e-9);
+    check_rel("microplastic: release leaves a compressive yield force", force[4], -c * sy, 1e-9);
+    check_rel("microplastic: permanent stretch after the cycle", plastic, 1e-3, 1e-9);
+    check_rel("microplastic: plastic work = c sy |total plastic flow| |xi|", mp.dissipated,
+              c * sy * (2e-3 + 1e-3) * h, 1e-9);
+    double plastic2 = 0.0, g[6] = {0}, f2[6] = {0};
+    pd_microplastic mp2 = {&big, &plastic2, 0.0};
+    x[3] = h * 1.01;
+    pd_microplastic_forces(&v, &mat, &mp2, l.type, x, l.vol, g, NULL);
+    pd_pmb_forces(&v, &mat, l.type, x, l.vol, f2, NULL);
+    check_true("microplastic with an unreachable yield stretch is PMB exactly", g[0] == f2[0] && g[3] == f2[3]);
+    l.natoms = 8;
+    lattice_free(&l);
   }
   return check_summary();
 }

@@ -6,17 +6,19 @@
 /* One loop body, inlined into specialized copies: the flags are constants at
  * each call site, so no copy carries a branch it does not need. */
 static inline __attribute__((always_inline)) void
-pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat,
+pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_microplastic *mp,
          const int *restrict type, const double *restrict x,
          const double *restrict vol, double *restrict f, pd_tally *tally,
-         const int weighted, const int tallied)
+         const int weighted, const int tallied, const int plastic)
 {
+  double work = 0.0;
   const int nt = mat->ntypes;
   for (int i = 0; i < b->nowner; i++) {
     const int n = b->count[i];
     if (!n) continue;
     const int row = i * b->stride;
     const double *restrict ci = mat->c + type[i] * nt;
+    const double *restrict syi = plastic ? mp->sy + type[i] * nt : NULL;
     const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
     const double vi = vol[i];
     double fxi = 0.0, fyi = 0.0, fzi = 0.0;
@@ -25,8 +27,21 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat,
       const double r0 = b->len0[row + k];
       const double dx = x[3 * j] - xi, dy = x[3 * j + 1] - yi, dz = x[3 * j + 2] - zi;
       const double len = sqrt(dx * dx + dy * dy + dz * dz);
-      const double s = (len - r0) / r0;
-      double t = ci[type[j]] * s;
+      double s = (len - r0) / r0;
+      const double c = ci[type[j]];
+      if (plastic) {
+        /* return map: the elastic stretch s - sp stays within [-sy, sy] */
+        double *sp = mp->plastic + row + k;
+        const double sy = syi[type[j]], e = s - *sp;
+        const double excess = e > sy ? e - sy : (e < -sy ? e + sy : 0.0);
+        if (excess != 0.0) {
+          *sp += excess;
+          work += c * sy * fabs(excess) * r0 * (weighted ? b->weight[row + k] : 1.0) *
+                  0.5 * (vol[j] + vi);
+        }
+        s -= *sp;
+      }
+      double t = c * s;
       if (weighted) t *= b->weight[row + k];
       const double tl = len > 0.0 ? t / len : 0.0;
       const double vj = vol[j];
@@ -51,6 +66,7 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat,
     f[3 * i + 1] += fyi;
     f[3 * i + 2] += fzi;
   }
+  if (plastic) mp->dissipated += work;
 }
 
 void pd_pmb_forces(const pd_bond_view *b, const pd_pmb *mat, const int *type,
@@ -58,10 +74,24 @@ void pd_pmb_forces(const pd_bond_view *b, const pd_pmb *mat, const int *type,
 {
   const int weighted = b->weight != NULL;
   if (tally) {
-    if (weighted) pmb_loop(b, mat, type, x, vol, f, tally, 1, 1);
-    else pmb_loop(b, mat, type, x, vol, f, tally, 0, 1);
+    if (weighted) pmb_loop(b, mat, NULL, type, x, vol, f, tally, 1, 1, 0);
+    else pmb_loop(b, mat, NULL, type, x, vol, f, tally, 0, 1, 0);
   } else {
-    if (weighted) pmb_loop(b, mat, type, x, vol, f, NULL, 1, 0);
-    else pmb_loop(b, mat, type, x, vol, f, NULL, 0, 0);
+    if (weighted) pmb_loop(b, mat, NULL, type, x, vol, f, NULL, 1, 0, 0);
+    else pmb_loop(b, mat, NULL, type, x, vol, f, NULL, 0, 0, 0);
+  }
+}
+
+void pd_microplastic_forces(const pd_bond_view *b, const pd_pmb *mat, pd_microplastic *mp,
+                            const int *type, const double *x, const double *vol, double *f,
+                            pd_tally *tally)
+{
+  const int weighted = b->weight != NULL;
+  if (tally) {
+    if (weighted) pmb_loop(b, mat, mp, type, x, vol, f, tally, 1, 1, 1);
+    else pmb_loop(b, mat, mp, type, x, vol, f, tally, 0, 1, 1);
+  } else {
+    if (weighted) pmb_loop(b, mat, mp, type, x, vol, f, NULL, 1, 0, 1);
+    else pmb_loop(b, mat, mp, type, x, vol, f, NULL, 0, 0, 1);
   }
 }

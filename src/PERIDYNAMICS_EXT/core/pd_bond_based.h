@@ -4,11 +4,21 @@
 
 #include "pd_bonds.h"
 
-/* Micromoduli c per type pair, row-major ntypes x ntypes over 0-based types. */
+/* Micromoduli c per type pair, row-major ntypes x ntypes over the types
+ * as indexed by the type array. */
 typedef struct pd_pmb {
   int ntypes;
   const double *c;
 } pd_pmb;
+
+/* Proportional microplastic bonds (MS07 eq. 19-21, fig. 2): the force is
+ * c (s - sp), and the plastic stretch sp follows s wherever |s - sp| would
+ * exceed the yield stretch sy (per type pair, as c). */
+typedef struct pd_microplastic {
+  const double *sy;   /* yield stretch per type pair (ntypes x ntypes) */
+  double *plastic;    /* per-bond plastic stretch, laid out as the bonds */
+  double dissipated;  /* plastic work added by each call (energy-density sum) */
+} pd_microplastic;
 
 /* Force density on every bond end: f_i += V_j c s w e_ij, f_j -= V_i c s w e_ij,
  * with s the stretch and e_ij the unit vector from i to j. x, f: 3 per atom
@@ -16,5 +26,13 @@ typedef struct pd_pmb {
  * energy density 1/4 c s^2 |xi| w V_other to each end and the virial. */
 void pd_pmb_forces(const pd_bond_view *b, const pd_pmb *mat, const int *type,
                    const double *x, const double *vol, double *f, pd_tally *tally);
+
+/* The same with microplastic bonds: updates plastic stretches, adds the
+ * plastic work to mp->dissipated (1/2 c sy |d sp| |xi| w per unit volume of
+ * each end's partner, as the energy); the energy tallied is the elastic part
+ * 1/4 c (s - sp)^2 |xi| w V_other. */
+void pd_microplastic_forces(const pd_bond_view *b, const pd_pmb *mat, pd_microplastic *mp,
+                            const int *type, const double *x, const double *vol, double *f,
+                            pd_tally *tally);
 
 #endif
