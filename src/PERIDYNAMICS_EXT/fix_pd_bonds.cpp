@@ -38,14 +38,17 @@ static inline bool owns_bond(tagint me, tagint other)
 
 FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), owner(nullptr), built_tag(nullptr),
-    use_weights(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
-    r0(nullptr), weight(nullptr), far(nullptr), nlost_local(0), list(nullptr),
+    use_weights(0), nhistory(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
+    r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), dissipated(0.0), list(nullptr),
     comm_array(nullptr), comm_width(1)
 {
-  if (narg != 4) error->all(FLERR, "Illegal fix pd/bonds command: expected 'weights yes|no'");
+  if (narg != 6 || strcmp(arg[4], "history") != 0)
+    error->all(FLERR, "Illegal fix pd/bonds command: expected 'weights|noweights history N'");
   if (strcmp(arg[3], "weights") == 0) use_weights = 1;
   else if (strcmp(arg[3], "noweights") == 0) use_weights = 0;
   else error->all(FLERR, "Illegal fix pd/bonds argument '{}': expected weights or noweights", arg[3]);
+  nhistory = utils::inumeric(FLERR, arg[5], false, lmp);
+  if (nhistory < 0) error->all(FLERR, "Illegal fix pd/bonds history count {}", nhistory);
 
   restart_global = 1;
   restart_peratom = 1;
@@ -71,6 +74,7 @@ FixPDBonds::~FixPDBonds()
   memory->destroy(partner);
   memory->destroy(r0);
   memory->destroy(weight);
+  memory->destroy(history);
   memory->destroy(far);
   memory->destroy(family_volume);
   memory->destroy(weighted_volume);
@@ -157,6 +161,7 @@ void FixPDBonds::build_families()
   memory->destroy(partner);
   memory->destroy(r0);
   memory->destroy(weight);
+  memory->destroy(history);
   memory->destroy(far);
   grow_arrays(atom->nmax);
 
@@ -174,6 +179,7 @@ void FixPDBonds::build_families()
       partner[i][k] = tag[j];
       r0[i][k] = r;
       if (use_weights) weight[i][k] = owner->bond_weight(type[i], type[j], r);
+      for (int h = 0; h < nhistory; h++) history[i][k * nhistory + h] = 0.0;
     }
   }
   built = 1;
@@ -184,7 +190,7 @@ void FixPDBonds::build_families()
   for (int i = 0; i < nlocal; i++) mybonds += npartner[i];
   MPI_Allreduce(&mybonds, &nbonds, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (comm->me == 0) {
-    const double bytes = sizeof(tagint) + sizeof(double) + sizeof(int) + (use_weights ? sizeof(double) : 0);
+    const double bytes = bytes_per_bond();
     utils::logmesg(lmp,
                    "pd/bonds: {} bonds, {:.2f} bonds per atom (each stored once), "
                    "up to {} owned per atom, {:.0f} bytes per bond\n",
@@ -216,6 +222,7 @@ void FixPDBonds::remove_bond(int i, int k)
   r0[i][k] = r0[i][last];
   far[i][k] = far[i][last];
   if (use_weights) weight[i][k] = weight[i][last];
+  for (int h = 0; h < nhistory; h++) history[i][k * nhistory + h] = history[i][last * nhistory + h];
 }
 
 // Family volume and weighted volume of every atom, over both ends of each bond.
@@ -250,9 +257,15 @@ double FixPDBonds::compute_scalar()
   return (double) total;
 }
 
+// tag, reference length, local index, then what the material asked for
+double FixPDBonds::bytes_per_bond() const
+{
+  return sizeof(tagint) + sizeof(double) + sizeof(int) + (use_weights + nhistory) * sizeof(double);
+}
+
 double FixPDBonds::memory_usage()
 {
-  const double per_bond = sizeof(tagint) + sizeof(double) + sizeof(int) + (use_weights ? sizeof(double) : 0);
+  const double per_bond = bytes_per_bond();
   return (double) atom->nmax * (maxpartner * per_bond + sizeof(int) + sizeof(tagint) + 2 * sizeof(double));
 }
 
@@ -311,6 +324,7 @@ void FixPDBonds::grow_arrays(int nmax)
   memory->grow(r0, nmax, maxpartner, "pd/bonds:r0");
   memory->grow(far, nmax, maxpartner, "pd/bonds:far");
   if (use_weights) memory->grow(weight, nmax, maxpartner, "pd/bonds:weight");
+  if (nhistory) memory->grow(history, nmax, maxpartner * nhistory, "pd/bonds:history");
   memory->grow(family_volume, nmax, "pd/bonds:family_volume");
   memory->grow(weighted_volume, nmax, "pd/bonds:weighted_volume");
   memory->grow(built_tag, nmax, "pd/bonds:built_tag");
@@ -324,6 +338,7 @@ void FixPDBonds::copy_arrays(int i, int j, int)
     r0[j][k] = r0[i][k];
     if (use_weights) weight[j][k] = weight[i][k];
   }
+  for (int h = 0; h < npartner[i] * nhistory; h++) history[j][h] = history[i][h];
   family_volume[j] = family_volume[i];
   weighted_volume[j] = weighted_volume[i];
   built_tag[j] = built_tag[i];
@@ -339,11 +354,11 @@ void FixPDBonds::set_arrays(int i)
 
 int FixPDBonds::per_atom_doubles(int i) const
 {
-  return PER_ATOM_FIXED + npartner[i] * (2 + use_weights);
+  return PER_ATOM_FIXED + npartner[i] * (2 + use_weights + nhistory);
 }
 
 // Layout shared by exchange and restart: count, own tag at build, family
-// volume, weighted volume, then per bond: tag, r0 [, weight].
+// volume, weighted volume, then per bond: tag, r0 [, weight] [, history].
 int FixPDBonds::pack_exchange(int i, double *buf)
 {
   int m = 0;
@@ -355,6 +370,7 @@ int FixPDBonds::pack_exchange(int i, double *buf)
     buf[m++] = ubuf(partner[i][k]).d;
     buf[m++] = r0[i][k];
     if (use_weights) buf[m++] = weight[i][k];
+    for (int h = 0; h < nhistory; h++) buf[m++] = history[i][k * nhistory + h];
   }
   return m;
 }
@@ -371,18 +387,21 @@ int FixPDBonds::unpack_exchange(int i, double *buf)
     partner[i][k] = (tagint) ubuf(buf[m++]).i;
     r0[i][k] = buf[m++];
     if (use_weights) weight[i][k] = buf[m++];
+    for (int h = 0; h < nhistory; h++) history[i][k * nhistory + h] = buf[m++];
   }
   return m;
 }
 
 void FixPDBonds::write_restart(FILE *fp)
 {
-  double total_lost = compute_scalar();
+  double total_lost = compute_scalar(), total_dissipated = 0.0;
+  MPI_Allreduce(&dissipated, &total_dissipated, 1, MPI_DOUBLE, MPI_SUM, world);
   if (comm->me == 0) {
-    double list[4] = {(double) built, (double) maxpartner, (double) use_weights, total_lost};
+    double list[6] = {(double) built, (double) maxpartner, (double) use_weights, total_lost,
+                      (double) nhistory, total_dissipated};
     int size = sizeof(list);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 4, fp);
+    fwrite(list, sizeof(double), 6, fp);
   }
 }
 
@@ -392,13 +411,18 @@ void FixPDBonds::restart(char *buf)
   if ((int) list[2] != use_weights)
     error->all(FLERR, "Fix pd/bonds: restart file bonds {} weights, the pair style now {}",
                list[2] ? "carry" : "carry no", use_weights ? "needs them" : "does not");
+  if ((int) list[4] != nhistory)
+    error->all(FLERR, "Fix pd/bonds: restart file bonds carry {} history values, the pair style "
+               "now needs {}", (int) list[4], nhistory);
   built = (int) list[0];
   maxpartner = (int) list[1];
-  // lost bonds are counted once, on rank 0, so the global sum carries over
+  // totals are kept once, on rank 0, so the global sums carry over
   nlost_local = comm->me == 0 ? (bigint) list[3] : 0;
+  dissipated = comm->me == 0 ? list[5] : 0.0;
   memory->destroy(partner);
   memory->destroy(r0);
   memory->destroy(weight);
+  memory->destroy(history);
   memory->destroy(far);
   grow_arrays(atom->nmax);
 }
@@ -424,5 +448,5 @@ int FixPDBonds::size_restart(int i)
 
 int FixPDBonds::maxsize_restart()
 {
-  return PER_ATOM_FIXED + maxpartner * (2 + use_weights) + 1;
+  return PER_ATOM_FIXED + maxpartner * (2 + use_weights + nhistory) + 1;
 }

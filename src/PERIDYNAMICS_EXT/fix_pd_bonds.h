@@ -53,6 +53,12 @@ class FixPDBonds : public Fix {
   void set_owner(PairPD *pair) { owner = pair; }
   bool is_built() const { return built; }
   pd_bond_view view() const;
+  // per-bond history values (nhistory per bond, laid out as the bonds), or null
+  double *history_data() const { return nhistory && history ? history[0] : nullptr; }
+  double bytes_per_bond() const;
+  // energy dissipated in the bonds (plastic work, ...): this rank's share
+  void add_dissipated(double e) { dissipated += e; }
+  double local_dissipated() const { return dissipated; }
 
   // Sum a per-atom array's ghost entries onto their owners, or copy the
   // owners' entries to their ghosts; 'width' doubles per atom, at most 2.
@@ -67,6 +73,7 @@ class FixPDBonds : public Fix {
   PairPD *owner;
   tagint *built_tag;       // each atom's own tag when the families were built (0: none)
   int use_weights;         // 1 if bonds carry a quadrature weight
+  int nhistory;            // history values per bond (e.g. plastic stretch)
   int built;               // families exist (set once, kept by restart)
   int maxpartner;          // row length of the per-atom bond tables
   int nowned;              // atoms whose local indices are current
@@ -74,8 +81,10 @@ class FixPDBonds : public Fix {
   tagint **partner;        // far end of each bond, as a global tag
   double **r0;             // reference length
   double **weight;         // quadrature weight (use_weights only)
+  double **history;        // per-bond history (nhistory > 0 only)
   int **far;               // far end as a local index (owned+ghost)
   bigint nlost_local;      // bonds dropped because the partner was lost
+  double dissipated;       // this rank's share of the dissipated energy
   class NeighList *list;
   double *comm_array;
   int comm_width;

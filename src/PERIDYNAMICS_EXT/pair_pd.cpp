@@ -20,6 +20,7 @@
 
 extern "C" {
 #include "pd_influence.h"
+#include "pd_material_file.h"
 #include "pd_timestep.h"
 }
 
@@ -28,7 +29,8 @@ using namespace LAMMPS_NS;
 static const char *const FIX_ID = "PD_BONDS";
 
 PairPD::PairPD(LAMMPS *lmp, const std::vector<std::string> &coef_names) :
-    Pair(lmp), names(coef_names), coef(nullptr), legacy(0), lattice_spacing(0.0), bonds(nullptr),
+    Pair(lmp), names(coef_names), coef(nullptr), legacy(0), model_dim(PD_3D), thickness(0.0),
+    lattice_spacing(0.0), bonds(nullptr),
     report_pending(0), work(nullptr), nwork(0)
 {
   restartinfo = 1;
@@ -81,6 +83,9 @@ int PairPD::coef_index(const std::string &name) const
 void PairPD::settings(int narg, char **arg)
 {
   legacy = 0;
+  model_dim = PD_3D;
+  thickness = 0.0;
+  const std::string style = force->pair_style;
   int iarg = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "legacy") == 0) {
@@ -88,10 +93,26 @@ void PairPD::settings(int narg, char **arg)
       iarg++;
       continue;
     }
+    if (strcmp(arg[iarg], "plane") == 0 || strcmp(arg[iarg], "thickness") == 0) {
+      if (domain->dimension != 2)
+        error->all(FLERR, "Pair style {}: '{}' is a 2D option (dimension 2)", style, arg[iarg]);
+      if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: '{}' needs a value", style, arg[iarg]);
+      if (strcmp(arg[iarg], "thickness") == 0) {
+        thickness = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+        if (!(thickness > 0.0)) error->all(FLERR, "Pair style {}: thickness must be positive", style);
+      } else if (strcmp(arg[iarg + 1], "stress") == 0) model_dim = PD_PLANE_STRESS;
+      else if (strcmp(arg[iarg + 1], "strain") == 0) model_dim = PD_PLANE_STRAIN;
+      else error->all(FLERR, "Pair style {}: 'plane {}': expected stress or strain", style, arg[iarg + 1]);
+      iarg += 2;
+      continue;
+    }
     const int used = parse_setting(narg, arg, iarg);
     if (!used) error->all(FLERR, "Pair style {}: unknown keyword '{}'", force->pair_style, arg[iarg]);
     iarg += used;
   }
+  if (domain->dimension == 2 && (model_dim == PD_3D || thickness == 0.0))
+    error->all(FLERR, "Pair style {} in 2D needs 'plane stress' or 'plane strain' and "
+               "'thickness <t>' (the plate thickness; volumes are area x thickness)", style);
 }
 
 int PairPD::parse_setting(int, char **, int)
@@ -103,13 +124,20 @@ void PairPD::coeff(int narg, char **arg)
 {
   if (narg < 2) error->all(FLERR, "Incorrect args for pair coefficients");
   if (!allocated) allocate();
+  if (narg > 2 && strcmp(arg[2], "file") == 0) return read_material_file(narg, arg);
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-
   int iarg = 2;
   if (iarg < narg && parse_model(arg[iarg])) iarg++;
-  std::vector<double> values(names.size(), NAN);
+  const std::vector<double> values = parse_values(narg, arg, iarg, std::vector<double>(names.size(), NAN));
+  if (set_coeff_pairs(ilo, ihi, jlo, jhi, values) == 0)
+    error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+// keyword/value pairs from arg[iarg] on, over the given values
+std::vector<double> PairPD::parse_values(int narg, char **arg, int iarg, std::vector<double> values)
+{
   for (; iarg < narg; iarg += 2) {
     const int p = coef_index(arg[iarg]);
     if (p < 0) {
@@ -122,7 +150,11 @@ void PairPD::coeff(int narg, char **arg)
       error->all(FLERR, "Pair {} coeff: keyword '{}' needs a value", force->pair_style, arg[iarg]);
     values[p] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
   }
+  return values;
+}
 
+int PairPD::set_coeff_pairs(int ilo, int ihi, int jlo, int jhi, const std::vector<double> &values)
+{
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
     for (int j = MAX(jlo, i); j <= jhi; j++) {
@@ -131,7 +163,68 @@ void PairPD::coeff(int narg, char **arg)
       setflag[i][j] = 1;
       count++;
     }
-  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+  return count;
+}
+
+// pair_coeff * * file <path> <material per type> [model] [key value ...]:
+// each type's constants from the file (keys this style knows), the line's
+// values on top; unlike types mix (init_one) unless given by another line.
+void PairPD::read_material_file(int narg, char **arg)
+{
+  const std::string style = force->pair_style;
+  const int ntypes = atom->ntypes;
+  if (strcmp(arg[0], "*") != 0 || strcmp(arg[1], "*") != 0)
+    error->all(FLERR, "Pair {} coeff file: use 'pair_coeff * * file <path> <one material per type>'", style);
+  if (narg < 4 + ntypes)
+    error->all(FLERR, "Pair {} coeff file: expected a path and {} material names", style, ntypes);
+  std::string text;
+  if (comm->me == 0) {
+    FILE *fp = utils::open_potential(arg[3], lmp, nullptr);
+    if (!fp) error->one(FLERR, "Pair {} coeff file: cannot open '{}'", style, arg[3]);
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, fp)) > 0) text.append(buf, n);
+    fclose(fp);
+  }
+  int len = text.size();
+  MPI_Bcast(&len, 1, MPI_INT, 0, world);
+  text.resize(len);
+  MPI_Bcast(&text[0], len, MPI_CHAR, 0, world);
+
+  int iarg = 4 + ntypes;
+  if (iarg < narg && parse_model(arg[iarg])) iarg++;
+  for (int t = 1; t <= ntypes; t++) {
+    const char *name = arg[3 + t];
+    if (strcmp(name, "NULL") == 0) continue;
+    pd_material mat;
+    char err[512];
+    if (pd_material_find(text.c_str(), name, &mat, err, sizeof err))
+      error->all(FLERR, "Pair {} coeff file '{}': {}", style, arg[3], err);
+    std::vector<double> values(names.size(), NAN);
+    for (size_t p = 0; p < names.size(); p++)
+      if (from_file(names[p])) values[p] = pd_material_get(&mat, names[p].c_str());
+    set_coeff_pairs(t, t, t, t, parse_values(narg, arg, iarg, values));
+  }
+}
+
+// The 3D material constants of a type pair from K and G, or from E and nu.
+pd_elastic PairPD::elastic(int i, int j, const char *who)
+{
+  const int pK = coef_index("K"), pG = coef_index("G"), pE = coef_index("E"), pnu = coef_index("nu");
+  const bool kg = given(pK, i, j) || given(pG, i, j), enu = given(pE, i, j) || given(pnu, i, j);
+  pd_elastic m;
+  if (kg == enu)
+    error->all(FLERR, "Pair {} coeff {} {}: give the elastic constants as K and G or as E and nu", who, i, j);
+  const int a = kg ? pK : pE, b = kg ? pG : pnu;
+  for (int p : {a, b})
+    if (!given(p, i, j)) error->all(FLERR, "Pair {} coeff {} {}: {} missing", who, i, j, names[p]);
+  const int bad = kg ? pd_elastic_from_K_G(value(a, i, j), value(b, i, j), &m)
+                     : pd_elastic_from_E_nu(value(a, i, j), value(b, i, j), &m);
+  if (bad)
+    error->all(FLERR, "Pair {} coeff {} {}: {} = {} and {} = {} are not an isotropic elastic "
+               "material (need K, G, E > 0 and -1 < nu < 1/2)", who, i, j, names[a],
+               value(a, i, j), names[b], value(b, i, j));
+  return m;
 }
 
 double PairPD::init_one(int i, int j)
@@ -168,7 +261,7 @@ void PairPD::init_style()
   double spacing = 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->vfrac[i] > 0.0)) bad = 1;
-    else spacing = MAX(spacing, cbrt(atom->vfrac[i]));
+    else spacing = MAX(spacing, dim() == 3 ? cbrt(atom->vfrac[i]) : sqrt(atom->vfrac[i] / thickness));
   }
   int anybad;
   MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, world);
@@ -177,9 +270,9 @@ void PairPD::init_style()
   double maxspacing;
   MPI_Allreduce(&spacing, &maxspacing, 1, MPI_DOUBLE, MPI_MAX, world);
   if (hmin < 1.01 * maxspacing)
-    error->all(FLERR, "Pair {}: horizon {} is not larger than the particle spacing {} (cube root of "
-               "the volume): families would have almost no bonds; use about 3 spacings", style,
-               hmin, maxspacing);
+    error->all(FLERR, "Pair {}: horizon {} is not larger than the particle spacing {} ({}): "
+               "families would have almost no bonds; use about 3 spacings", style, hmin, maxspacing,
+               dim() == 3 ? "cube root of the volume" : "square root of volume / thickness");
   for (int d = 0; d < domain->dimension; d++)
     if (domain->periodicity[d] && domain->prd[d] <= 2.0 * cutmax)
       error->all(FLERR, "Pair {}: periodic box length {} is not larger than twice the horizon {}",
@@ -197,13 +290,14 @@ void PairPD::init_style()
 
   int ifix = modify->find_fix(FIX_ID);
   if (ifix < 0) {
-    modify->add_fix(fmt::format("{} all pd/bonds {}", FIX_ID, uses_weights() ? "weights" : "noweights"));
+    modify->add_fix(fmt::format("{} all pd/bonds {} history {}", FIX_ID,
+                                uses_weights() ? "weights" : "noweights", history_per_bond()));
     ifix = modify->find_fix(FIX_ID);
   }
   bonds = dynamic_cast<FixPDBonds *>(modify->fix[ifix]);
   if (!bonds) error->all(FLERR, "Fix ID {} is taken by a fix that is not pd/bonds", FIX_ID);
   bonds->set_owner(this);
-  report_pending = 1;
+  report_pending = 1;    // report and per-run set-up at the first compute
 }
 
 double PairPD::bond_weight(int itype, int jtype, double r) const
@@ -233,6 +327,7 @@ void PairPD::tally(const pd_tally &t)
 void PairPD::report_setup()
 {
   report_pending = 0;
+  setup_run();
   grow_work();
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) work[i] = 0.0;
@@ -245,8 +340,10 @@ void PairPD::report_setup()
   if (comm->me == 0) {
     std::string hs;
     for (int i = 1; i <= atom->ntypes; i++) hs += fmt::format(" {}", horizon(i, i));
-    utils::logmesg(lmp, "{}: horizon{}{}; stable time step estimate (MS07 eq. 43) {:.6g}, "
-                   "timestep {:.6g} is {:.3f} of it\n", force->pair_style, hs,
+    const char *dims[] = {"3D", "2D plane stress", "2D plane strain"};
+    utils::logmesg(lmp, "{}: {}{}, horizon{}{}; stable time step estimate (MS07 eq. 43) {:.6g}, "
+                   "timestep {:.6g} is {:.3f} of it\n", force->pair_style, dims[model_dim],
+                   dim() == 2 ? fmt::format(" (thickness {})", thickness) : "", hs,
                    legacy ? " (legacy PERI mode)" : "", dt, update->dt, update->dt / dt);
     report_extra();
   }
@@ -287,8 +384,11 @@ void PairPD::read_restart(FILE *fp)
 
 void PairPD::write_restart_settings(FILE *fp)
 {
+  const int dimcode = (int) model_dim;
   fwrite(&legacy, sizeof(int), 1, fp);
   fwrite(&lattice_spacing, sizeof(double), 1, fp);
+  fwrite(&dimcode, sizeof(int), 1, fp);
+  fwrite(&thickness, sizeof(double), 1, fp);
 }
 
 void PairPD::read_restart_settings(FILE *fp)
@@ -297,8 +397,16 @@ void PairPD::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &legacy, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &lattice_spacing, sizeof(double), 1, fp, nullptr, error);
   }
+  int dimcode = 0;
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &dimcode, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &thickness, sizeof(double), 1, fp, nullptr, error);
+  }
   MPI_Bcast(&legacy, 1, MPI_INT, 0, world);
   MPI_Bcast(&lattice_spacing, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&dimcode, 1, MPI_INT, 0, world);
+  MPI_Bcast(&thickness, 1, MPI_DOUBLE, 0, world);
+  model_dim = (pd_dimension) dimcode;
 }
 
 double PairPD::memory_usage()

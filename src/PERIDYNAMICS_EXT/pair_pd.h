@@ -14,6 +14,7 @@
 
 extern "C" {
 #include "pd_bonds.h"
+#include "pd_params.h"
 }
 
 namespace LAMMPS_NS {
@@ -45,6 +46,8 @@ class PairPD : public Pair {
   std::vector<std::string> names;
   double ***coef;           // coef[p][i][j] for names[p]; NaN when not given
   int legacy;               // reproduce legacy PERI (partial volumes, ...)
+  pd_dimension model_dim;   // 3D, plane stress or plane strain
+  double thickness;         // plate thickness of a 2D model
   double lattice_spacing;   // legacy partial volumes need it (0: not yet known)
   FixPDBonds *bonds;
   int report_pending;       // print the setup report at the next compute
@@ -56,10 +59,18 @@ class PairPD : public Pair {
   virtual int parse_model(const char *) { return 0; }           // leading model word in pair_coeff
   virtual void check_coeff(int i, int j) = 0;                   // complete/validate one pair
   virtual int uses_weights() const { return legacy; }
+  virtual int history_per_bond() const { return 0; }
+  virtual bool from_file(const std::string &) const { return true; }  // take this key from files
+  virtual void setup_run() {}                                   // first compute of a run
   virtual void stable_dt_sum(double *sum) = 0;    // add stiffness sums over nall
   virtual void report_extra() {}
 
   void allocate();
+  int dim() const { return pd_dimension_count(model_dim); }
+  void read_material_file(int narg, char **arg);
+  int set_coeff_pairs(int ilo, int ihi, int jlo, int jhi, const std::vector<double> &values);
+  std::vector<double> parse_values(int narg, char **arg, int iarg, std::vector<double> values);
+  pd_elastic elastic(int i, int j, const char *who);   // from K,G or E,nu coefficients
   double value(int p, int i, int j) const { return coef[p][i][j]; }
   bool given(int p, int i, int j) const;
   int coef_index(const std::string &name) const;

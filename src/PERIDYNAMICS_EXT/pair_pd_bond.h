@@ -1,5 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   PERIDYNAMICS_EXT: pair_style pd/bond, bond-based peridynamics (PMB).
+   PERIDYNAMICS_EXT: pair_style pd/bond, bond-based peridynamics: PMB and
+   proportional microplastic bonds.
 ------------------------------------------------------------------------- */
 
 #ifdef PAIR_CLASS
@@ -19,10 +20,17 @@ class PairPDBond : public PairPD {
  public:
   PairPDBond(class LAMMPS *);
   void compute(int, int) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
 
  protected:
+  int model;            // word given with the last pair_coeff (pmb or microplastic)
+  int plastic;          // some type pair is microplastic: per-bond plastic stretch
+
   int parse_model(const char *) override;
   void check_coeff(int, int) override;
+  int history_per_bond() const override { return plastic; }
+  bool from_file(const std::string &key) const override { return key != "nu"; }
   void stable_dt_sum(double *) override;
 };
 

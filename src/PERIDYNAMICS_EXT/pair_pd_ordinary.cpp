@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 extern "C" {
 #include "pd_influence.h"
@@ -28,10 +29,11 @@ extern "C" {
 
 using namespace LAMMPS_NS;
 
-enum { HORIZON, BULK, SHEAR, ORDER };
+enum { HORIZON, BULK, SHEAR, YOUNG, POISSON, ORDER };
 
 PairPDOrdinary::PairPDOrdinary(LAMMPS *lmp) :
-    PairPD(lmp, {"horizon", "K", "G", "m"}), influence(PD_INFLUENCE_INVERSE), order(0.5),
+    PairPD(lmp, {"horizon", "K", "G", "E", "nu", "m"}), influence(PD_INFLUENCE_INVERSE),
+    per_atom_norm(0), order(0.5), bulk_volume(nullptr), lambda_bar(nullptr), mu_bar(nullptr),
     theta(nullptr), abstate(nullptr), nmax(0)
 {
 }
@@ -40,10 +42,20 @@ PairPDOrdinary::~PairPDOrdinary()
 {
   memory->destroy(theta);
   memory->destroy(abstate);
+  memory->destroy(bulk_volume);
+  memory->destroy(lambda_bar);
+  memory->destroy(mu_bar);
 }
 
 int PairPDOrdinary::parse_setting(int narg, char **arg, int iarg)
 {
+  if (strcmp(arg[iarg], "surface_correction") == 0) {
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair pd/ordinary: 'surface_correction' needs yes or no");
+    if (strcmp(arg[iarg + 1], "yes") == 0) per_atom_norm = 1;
+    else if (strcmp(arg[iarg + 1], "no") == 0) per_atom_norm = 0;
+    else error->all(FLERR, "Pair pd/ordinary: surface_correction '{}': expected yes or no", arg[iarg + 1]);
+    return 2;
+  }
   if (strcmp(arg[iarg], "influence") != 0) return 0;
   if (iarg + 1 >= narg) error->all(FLERR, "Pair pd/ordinary: 'influence' needs a name");
   influence = pd_influence_from_name(arg[iarg + 1]);
@@ -57,9 +69,15 @@ void PairPDOrdinary::check_coeff(int i, int j)
 {
   if (!given(HORIZON, i, j) || value(HORIZON, i, j) <= 0.0)
     error->all(FLERR, "Pair pd/ordinary coeff {} {}: horizon missing or not positive", i, j);
-  for (int p : {BULK, SHEAR})
-    if (!given(p, i, j) || !(value(p, i, j) > 0.0))
-      error->all(FLERR, "Pair pd/ordinary coeff {} {}: {} missing or not positive", i, j, names[p]);
+  for (int p : {BULK, SHEAR, YOUNG})
+    if (given(p, i, j) && !(value(p, i, j) > 0.0))
+      error->all(FLERR, "Pair pd/ordinary coeff {} {}: {} must be positive, got {}", i, j, names[p],
+                 value(p, i, j));
+  const pd_elastic m = elastic(i, j, "pd/ordinary");
+  coef[BULK][i][j] = m.K;
+  coef[SHEAR][i][j] = m.G;
+  coef[YOUNG][i][j] = m.E;
+  coef[POISSON][i][j] = m.nu;
   if (!given(ORDER, i, j)) coef[ORDER][i][j] = 0.5;
   if (!(value(ORDER, i, j) <= 1.0 && value(ORDER, i, j) >= -4.0))
     error->all(FLERR, "Pair pd/ordinary coeff {} {}: strain order m = {} is outside [-4, 1]", i, j,
@@ -68,8 +86,11 @@ void PairPDOrdinary::check_coeff(int i, int j)
 
 void PairPDOrdinary::init_style()
 {
-  if (legacy) influence = PD_INFLUENCE_LPS;
-  if (domain->dimension != 3) error->all(FLERR, "Pair pd/ordinary supports 3D only for now");
+  if (legacy) {
+    influence = PD_INFLUENCE_LPS;
+    per_atom_norm = 1;
+    if (dim() != 3) error->all(FLERR, "Pair pd/ordinary legacy reproduces peri/lps, which is 3D");
+  }
   order = coef[ORDER][1][1];
   for (int i = 1; i <= atom->ntypes; i++)
     if (coef[ORDER][i][i] != order)
@@ -82,14 +103,41 @@ void PairPDOrdinary::init_style()
 
 double PairPDOrdinary::bond_weight(int itype, int jtype, double r) const
 {
-  return pd_influence((pd_influence_kind) influence, 3, r, horizon(itype, jtype)) *
+  return pd_influence((pd_influence_kind) influence, dim(), r, horizon(itype, jtype)) *
       PairPD::bond_weight(itype, jtype, r);
 }
 
+// N = d / m: m is the atom's own weighted volume with the surface
+// correction, else that of a complete family of its type (T14 6.1.3: no
+// renormalization at free surfaces; surface atoms are softer).
 double PairPDOrdinary::norm(int i) const
 {
-  const double m = bonds->weighted_volume[i];
-  return m > 0.0 ? 3.0 / m : 0.0;
+  const double m = per_atom_norm ? bonds->weighted_volume[i] : bulk_volume[atom->type[i]];
+  return m > 0.0 ? dim() / m : 0.0;
+}
+
+// Per run: the Lame constants per type and the complete-family weighted
+// volume, the largest over the type's atoms (an interior atom's).
+void PairPDOrdinary::setup_run()
+{
+  const int ntypes = atom->ntypes;
+  memory->destroy(bulk_volume);
+  memory->destroy(lambda_bar);
+  memory->destroy(mu_bar);
+  memory->create(bulk_volume, ntypes + 1, "pair:bulk_volume");
+  memory->create(lambda_bar, ntypes + 1, "pair:lambda_bar");
+  memory->create(mu_bar, ntypes + 1, "pair:mu_bar");
+  std::vector<double> mine(ntypes + 1, 0.0);
+  for (int i = 0; i < atom->nlocal; i++)
+    mine[atom->type[i]] = MAX(mine[atom->type[i]], bonds->weighted_volume[i]);
+  MPI_Allreduce(mine.data(), bulk_volume, ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+  for (int t = 1; t <= ntypes; t++) {
+    pd_elastic m;
+    pd_elastic_from_K_G(coef[BULK][t][t], coef[SHEAR][t][t], &m);
+    const pd_lame l = pd_ordinary_lame(model_dim, &m);
+    lambda_bar[t] = l.lambda;
+    mu_bar[t] = l.mu;
+  }
 }
 
 void PairPDOrdinary::grow_state()
@@ -123,8 +171,7 @@ void PairPDOrdinary::compute(int eflag, int vflag)
   t.eatom = eflag_atom ? eatom : nullptr;
   for (int i = 0; i < nlocal; i++) {
     const int ti = type[i];
-    const pd_lame l = pd_ordinary_lame_3d(coef[BULK][ti][ti], coef[SHEAR][ti][ti]);
-    const pd_ordinary_atom_out o = pd_ordinary_atom(l.lambda, l.mu, norm(i), sum[i]);
+    const pd_ordinary_atom_out o = pd_ordinary_atom(lambda_bar[ti], mu_bar[ti], norm(i), sum[i]);
     theta[i] = o.theta;
     abstate[2 * i] = o.a;
     abstate[2 * i + 1] = o.b;
@@ -145,8 +192,7 @@ void PairPDOrdinary::stable_dt_sum(double *sum)
   double *k = abstate;    // scratch: stiffness coefficient per atom
   for (int i = 0; i < nlocal; i++) {
     const int ti = atom->type[i];
-    const pd_lame l = pd_ordinary_lame_3d(coef[BULK][ti][ti], coef[SHEAR][ti][ti]);
-    k[i] = norm(i) * (2.0 * l.mu + 3.0 * fabs(l.lambda));
+    k[i] = norm(i) * (2.0 * mu_bar[ti] + dim() * fabs(lambda_bar[ti]));
   }
   bonds->copy_to_ghosts(k);
   const pd_bond_view v = bonds->view();
@@ -155,21 +201,32 @@ void PairPDOrdinary::stable_dt_sum(double *sum)
 
 void PairPDOrdinary::report_extra()
 {
-  utils::logmesg(lmp, "pd/ordinary: strain order m = {}, influence {}, normalized per atom by "
-                 "its weighted volume\n", order, pd_influence_name((pd_influence_kind) influence));
+  std::string lame;
+  for (int t = 1; t <= atom->ntypes; t++)
+    lame += fmt::format(" type {}: lambda_bar {:.4g} mu_bar {:.4g};", t, lambda_bar[t], mu_bar[t]);
+  utils::logmesg(lmp, "pd/ordinary: strain order m = {}, influence {}, {};{}\n", order,
+                 pd_influence_name((pd_influence_kind) influence),
+                 per_atom_norm ? "normalized per atom (surface correction)"
+                               : "normalized by the complete family (no surface correction)",
+                 lame);
 }
 
 void PairPDOrdinary::write_restart_settings(FILE *fp)
 {
   PairPD::write_restart_settings(fp);
   fwrite(&influence, sizeof(int), 1, fp);
+  fwrite(&per_atom_norm, sizeof(int), 1, fp);
 }
 
 void PairPDOrdinary::read_restart_settings(FILE *fp)
 {
   PairPD::read_restart_settings(fp);
-  if (comm->me == 0) utils::sfread(FLERR, &influence, sizeof(int), 1, fp, nullptr, error);
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &influence, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &per_atom_norm, sizeof(int), 1, fp, nullptr, error);
+  }
   MPI_Bcast(&influence, 1, MPI_INT, 0, world);
+  MPI_Bcast(&per_atom_norm, 1, MPI_INT, 0, world);
 }
 
 void *PairPDOrdinary::extract(const char *name, int &dim)

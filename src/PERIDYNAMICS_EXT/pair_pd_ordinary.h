@@ -29,7 +29,10 @@ class PairPDOrdinary : public PairPD {
 
  protected:
   int influence;       // pd_influence_kind
+  int per_atom_norm;   // surface correction: normalize by each atom's weighted volume
   double order;        // Seth-Hill order m, the same for all types
+  double *bulk_volume; // per type: weighted volume of a complete family
+  double *lambda_bar, *mu_bar;    // per type: peridynamic Lame constants
   double *theta;       // dilatation of owned atoms
   double *abstate;     // per atom A = lambda theta N, B = 2 mu N (owned + ghost)
   int nmax;
@@ -39,6 +42,7 @@ class PairPDOrdinary : public PairPD {
   int uses_weights() const override { return 1; }
   void stable_dt_sum(double *) override;
   void report_extra() override;
+  void setup_run() override;
   void grow_state();
   double norm(int i) const;
 };

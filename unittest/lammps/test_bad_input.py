@@ -1,6 +1,7 @@
 """Bad input gets a LAMMPS ERROR line that names what is wrong (issue 2),
 never a crash, a NaN or a silent default."""
 from lmptest import *
+import os
 
 d = workdir()
 H = HORIZON
@@ -16,6 +17,10 @@ for i in range(start, len(lines)):
         w[2] = "0.0"
         lines[i] = " ".join(w)
 open(f"{d}/zero.data", "w").write("\n".join(lines) + "\n")
+open(f"{d}/bad.pd", "w").write("material glass\n  density 2500\n  E -70e9  # sign slip\n  nu 0.2\nend\n")
+MATERIALS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../potentials/materials.pd")
+PLATE = ("units si\ndimension 2\nboundary p p p\natom_style peri\natom_modify map array\nlattice sq 5e-4\n"
+         "region b block 0 10 0 10 -0.5 0.5\ncreate_box 1 b\ncreate_atoms 1 box\n")
 DATA = "units si\nboundary p p p\natom_style peri\natom_modify map array\nread_data zero.data\n"
 
 cases = [
@@ -46,13 +51,34 @@ cases = [
     ("unknown pair_coeff keyword", block(6) + f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H} s0 1\n",
      "unknown keyword 's0'"),
     ("pd/ordinary without G", block(6) + f"pair_style pd/ordinary\npair_coeff * * K 1e9 horizon {H}\n",
-     "G missing or not positive"),
+     "G missing"),
     ("pd/ordinary negative K", block(6) + f"pair_style pd/ordinary\npair_coeff * * K -1e9 G 1e9 horizon {H}\n",
-     "K missing or not positive"),
+     "K must be positive"),
     ("pd/ordinary order out of range", block(6) + f"pair_style pd/ordinary\npair_coeff * * K 1e9 G 1e9 horizon {H} m 2\n",
      "strain order m = 2 is outside"),
     ("pd/ordinary unknown influence", block(6) + "pair_style pd/ordinary influence cubic\n",
      "unknown influence function 'cubic'"),
+    ("nu at 1/2", block(6) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.5 horizon {H}\n",
+     "are not an isotropic elastic material"),
+    ("nu at -1", block(6) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu -1 horizon {H}\n",
+     "are not an isotropic elastic material"),
+    ("K and E together", block(6) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 K 1e9 G 1e9 horizon {H}\n",
+     "give the elastic constants as K and G or as E and nu"),
+    ("bond-based with nu != 1/4", block(6) + f"pair_style pd/bond\npair_coeff * * pmb E 1e9 nu 0.3 horizon {H}\n",
+     "bond-based elasticity has Poisson's ratio 0.25"),
+    ("2D without plane and thickness", PLATE + "pair_style pd/ordinary\n", "needs 'plane stress' or 'plane strain'"),
+    ("2D without thickness", PLATE + "pair_style pd/ordinary plane stress\n", "and 'thickness <t>'"),
+    ("2D option in 3D", block(6) + "pair_style pd/ordinary plane stress thickness 1e-3\n", "'plane' is a 2D option"),
+    ("3D-only option in 2D", PLATE + f"pair_style pd/bond plane stress thickness 5e-4\npair_coeff * * pmb K 1e9 horizon {H}\n",
+     "K is a 3D option"),
+    ("microplastic without yield stretch", block(6) + f"pair_style pd/bond\npair_coeff * * microplastic E 1e9 horizon {H}\n",
+     "microplastic needs a positive yield_stretch"),
+    ("material missing from the file", block(6) + f"pair_style pd/ordinary\npair_coeff * * file {MATERIALS} unobtainium horizon {H}\n",
+     "material unobtainium is not in the file"),
+    ("material file value without units sense", block(6) + f"pair_style pd/ordinary\npair_coeff * * file bad.pd glass horizon {H}\n",
+     "E = -7e+10 must be positive"),
+    ("strain order missing its value", block(6) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.2 horizon {H} m\n",
+     "keyword 'm' needs a value"),
     ("legacy without a lattice", DATA.replace("zero.data", "ok.data") +
      f"pair_style pd/bond legacy\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN, "need the lattice spacing"),
 ]
