@@ -32,7 +32,7 @@ using namespace LAMMPS_NS;
 enum { HORIZON, BULK, SHEAR, YOUNG, POISSON, ORDER };
 
 PairPDOrdinary::PairPDOrdinary(LAMMPS *lmp) :
-    PairPD(lmp, {"horizon", "K", "G", "E", "nu", "m"}), influence(PD_INFLUENCE_INVERSE),
+    PairPD(lmp, {"horizon", "K", "G", "E", "nu", "m"}), influence(-1),
     per_atom_norm(0), order(0.5), bulk_volume(nullptr), lambda_bar(nullptr), mu_bar(nullptr),
     theta(nullptr), abstate(nullptr), nmax(0)
 {
@@ -45,6 +45,13 @@ PairPDOrdinary::~PairPDOrdinary()
   memory->destroy(bulk_volume);
   memory->destroy(lambda_bar);
   memory->destroy(mu_bar);
+}
+
+void PairPDOrdinary::settings(int narg, char **arg)
+{
+  influence = -1;
+  per_atom_norm = 0;
+  PairPD::settings(narg, arg);
 }
 
 int PairPDOrdinary::parse_setting(int narg, char **arg, int iarg)
@@ -86,6 +93,10 @@ void PairPDOrdinary::check_coeff(int i, int j)
 
 void PairPDOrdinary::init_style()
 {
+  // default influence: the one whose lattice moduli are closest to the input
+  // at delta = 3 spacings (THEORY.md; test_waves.py): 1/|xi| on the cubic
+  // lattice, constant on the square one
+  if (influence < 0) influence = dim() == 3 ? PD_INFLUENCE_INVERSE : PD_INFLUENCE_CONSTANT;
   if (legacy) {
     influence = PD_INFLUENCE_LPS;
     per_atom_norm = 1;

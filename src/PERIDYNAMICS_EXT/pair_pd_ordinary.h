@@ -21,6 +21,7 @@ class PairPDOrdinary : public PairPD {
   PairPDOrdinary(class LAMMPS *);
   ~PairPDOrdinary() override;
   void compute(int, int) override;
+  void settings(int, char **) override;
   void init_style() override;
   double bond_weight(int, int, double) const override;
   void write_restart_settings(FILE *) override;
