@@ -39,11 +39,12 @@ static inline bool owns_bond(tagint me, tagint other)
 FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), owner(nullptr), built_tag(nullptr),
     use_weights(0), nhistory(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
-    r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), dissipated(0.0), list(nullptr),
+    r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), dissipated(0.0), family_key(0.0), list(nullptr),
     comm_array(nullptr), comm_width(1)
 {
   if (narg != 6 || strcmp(arg[4], "history") != 0)
-    error->all(FLERR, "Illegal fix pd/bonds command: expected 'weights|noweights history N'");
+    error->all(FLERR, "Illegal fix pd/bonds command: expected 'weights|noweights history N' "
+               "(it is created by the pd/ pair styles)");
   if (strcmp(arg[3], "weights") == 0) use_weights = 1;
   else if (strcmp(arg[3], "noweights") == 0) use_weights = 0;
   else error->all(FLERR, "Illegal fix pd/bonds argument '{}': expected weights or noweights", arg[3]);
@@ -107,19 +108,30 @@ void FixPDBonds::setup_post_neighbor()
 }
 
 // Between runs, commands can renumber atoms (delete_atoms with compress
-// yes, reset_atom_ids): the stored partner tags would then name other atoms.
-// Each atom carries the tag it had when the families were built.
+// yes, reset_atom_ids) or give a new atom a deleted atom's ID: the stored
+// partner tags would then name other atoms. Each atom carries the tag it had
+// when the families were built; every bond's far end must still carry the
+// partner's.
 void FixPDBonds::check_identities()
 {
+  const int nall = atom->nlocal + atom->nghost;
+  double *who = new double[nall];
+  for (int i = 0; i < nall; i++) who[i] = i < atom->nlocal ? (double) built_tag[i] : -1.0;
+  copy_to_ghosts(who);
   int bad = 0;
-  for (int i = 0; i < atom->nlocal; i++)
+  for (int i = 0; i < nowned && !bad; i++) {
     if (built_tag[i] && built_tag[i] != atom->tag[i]) bad = 1;
+    for (int k = 0; k < npartner[i]; k++)
+      if (who[far[i][k]] != (double) partner[i][k]) bad = 1;
+  }
+  delete[] who;
   int anybad;
   MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, world);
   if (anybad)
     error->all(FLERR, "Fix pd/bonds: atom IDs changed since the bond families were built "
-               "(e.g. by 'delete_atoms ... compress yes' or reset_atom_ids), so stored partners "
-               "would name other atoms; use 'delete_atoms ... compress no'");
+               "(e.g. by 'delete_atoms ... compress yes', reset_atom_ids, or new atoms taking a "
+               "deleted atom's ID), so stored partners would name other atoms; use "
+               "'delete_atoms ... compress no' and create new atoms before the first run");
 }
 
 void FixPDBonds::post_neighbor()
@@ -200,19 +212,41 @@ void FixPDBonds::build_families()
 
 // Local indices of the far ends: the image closest to the owner, valid until
 // the next reneighboring (atoms move less than half the skin meanwhile).
+// A partner beyond the ghost cutoff is lost even when this rank happens to
+// own it, so that the same bonds are lost on any number of ranks.
 void FixPDBonds::map_partners()
 {
   nowned = atom->nlocal;
+  const double cut = comm->get_comm_cutoff(), cutsq = cut * cut;
+  double **x = atom->x;
+  const bigint lost_before = nlost_local;
   for (int i = 0; i < nowned; i++)
     for (int k = 0; k < npartner[i]; k++) {
-      const int j = atom->map(partner[i][k]);
+      int j = atom->map(partner[i][k]);
+      if (j >= 0) j = domain->closest_image(i, j);
+      if (j >= 0) {
+        const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
+        if (dx * dx + dy * dy + dz * dz > cutsq) j = -1;
+      }
       if (j < 0) {
         remove_bond(i, k--);
         nlost_local++;
         continue;
       }
-      far[i][k] = domain->closest_image(i, j);
+      far[i][k] = j;
     }
+  // minimize's line search moves atoms by up to 'min_modify dmax' (0.1
+  // length units by default: 10 cm in SI), which tears bonds that physics
+  // would keep; every rank is here at once, so the check is collective
+  if (update->whichflag == 2) {
+    const int mine = nlost_local > lost_before;
+    int any;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any)
+      error->all(FLERR, "Fix pd/bonds: bond partners moved beyond the ghost cutoff during "
+                 "minimize; limit the line search step with 'min_modify dmax' (a small "
+                 "fraction of the particle spacing)");
+  }
 }
 
 void FixPDBonds::remove_bond(int i, int k)
@@ -397,11 +431,11 @@ void FixPDBonds::write_restart(FILE *fp)
   double total_lost = compute_scalar(), total_dissipated = 0.0;
   MPI_Allreduce(&dissipated, &total_dissipated, 1, MPI_DOUBLE, MPI_SUM, world);
   if (comm->me == 0) {
-    double list[6] = {(double) built, (double) maxpartner, (double) use_weights, total_lost,
-                      (double) nhistory, total_dissipated};
+    double list[7] = {(double) built, (double) maxpartner, (double) use_weights, total_lost,
+                      (double) nhistory, total_dissipated, family_key};
     int size = sizeof(list);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 6, fp);
+    fwrite(list, sizeof(double), 7, fp);
   }
 }
 
@@ -419,6 +453,7 @@ void FixPDBonds::restart(char *buf)
   // totals are kept once, on rank 0, so the global sums carry over
   nlost_local = comm->me == 0 ? (bigint) list[3] : 0;
   dissipated = comm->me == 0 ? list[5] : 0.0;
+  family_key = list[6];
   memory->destroy(partner);
   memory->destroy(r0);
   memory->destroy(weight);

@@ -51,6 +51,9 @@ class FixPDBonds : public Fix {
   void unpack_reverse_comm(int, int *, double *) override;
 
   void set_owner(PairPD *pair) { owner = pair; }
+  // what the families were built for (pair style, horizons, weights ...)
+  double built_for() const { return family_key; }
+  void set_family_key(double key) { if (!built) family_key = key; }
   bool is_built() const { return built; }
   pd_bond_view view() const;
   // per-bond history values (nhistory per bond, laid out as the bonds), or null
@@ -85,6 +88,7 @@ class FixPDBonds : public Fix {
   int **far;               // far end as a local index (owned+ghost)
   bigint nlost_local;      // bonds dropped because the partner was lost
   double dissipated;       // this rank's share of the dissipated energy
+  double family_key;       // hash of the pair settings the families were built for
   class NeighList *list;
   double *comm_array;
   int comm_width;

@@ -16,6 +16,7 @@
 #include "update.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 extern "C" {
@@ -278,7 +279,10 @@ void PairPD::init_style()
       error->all(FLERR, "Pair {}: periodic box length {} is not larger than twice the horizon {}",
                  style, domain->prd[d], cutmax);
 
-  if (legacy && lattice_spacing == 0.0) {
+  int ifix = modify->find_fix(FIX_ID);
+  const bool built = ifix >= 0 && dynamic_cast<FixPDBonds *>(modify->fix[ifix]) &&
+      dynamic_cast<FixPDBonds *>(modify->fix[ifix])->is_built();
+  if (legacy && lattice_spacing == 0.0 && !built) {
     if (domain->lattice->style == Lattice::NONE)
       error->all(FLERR, "Pair {} legacy reproduces PERI's partial volumes, which need the lattice "
                  "spacing: define a lattice first (it is saved in restart files)", style);
@@ -288,7 +292,6 @@ void PairPD::init_style()
     lattice_spacing = domain->lattice->xlattice;
   }
 
-  int ifix = modify->find_fix(FIX_ID);
   if (ifix < 0) {
     modify->add_fix(fmt::format("{} all pd/bonds {} history {}", FIX_ID,
                                 uses_weights() ? "weights" : "noweights", history_per_bond()));
@@ -297,7 +300,25 @@ void PairPD::init_style()
   bonds = dynamic_cast<FixPDBonds *>(modify->fix[ifix]);
   if (!bonds) error->all(FLERR, "Fix ID {} is taken by a fix that is not pd/bonds", FIX_ID);
   bonds->set_owner(this);
+  bonds->set_family_key(family_key());
+  if (bonds->is_built() && bonds->built_for() != family_key())
+    error->all(FLERR, "Pair {}: the bond families were built for other pair settings (style, "
+               "horizons, influence, legacy or dimension changed after the first run); they are "
+               "built once: start the simulation again with the new settings", style);
   report_pending = 1;    // report and per-run set-up at the first compute
+}
+
+// A fingerprint of everything that decides which bonds exist and what they
+// store, exactly representable as a double (52 bits of FNV-1a).
+double PairPD::family_key() const
+{
+  std::string s = fmt::format("{}|{}|{}|{}|{}|{}|{}", force->pair_style, legacy, lattice_spacing,
+                              (int) model_dim, uses_weights(), history_per_bond(), family_settings());
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) s += fmt::format("|{}", horizon(i, j));
+  uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : s) h = (h ^ c) * 1099511628211ULL;
+  return (double) (h >> 12);
 }
 
 double PairPD::bond_weight(int itype, int jtype, double r) const

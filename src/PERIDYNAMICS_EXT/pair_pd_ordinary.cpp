@@ -72,10 +72,18 @@ int PairPDOrdinary::parse_setting(int narg, char **arg, int iarg)
   return 2;
 }
 
+std::string PairPDOrdinary::family_settings() const
+{
+  return pd_influence_name((pd_influence_kind) influence);
+}
+
+// Each atom's force state uses its own type's material (pair_coeff I I); an
+// I J line with I != J sets only the horizon of the bonds between the types.
 void PairPDOrdinary::check_coeff(int i, int j)
 {
   if (!given(HORIZON, i, j) || value(HORIZON, i, j) <= 0.0)
     error->all(FLERR, "Pair pd/ordinary coeff {} {}: horizon missing or not positive", i, j);
+  if (i != j) return;
   for (int p : {BULK, SHEAR, YOUNG})
     if (given(p, i, j) && !(value(p, i, j) > 0.0))
       error->all(FLERR, "Pair pd/ordinary coeff {} {}: {} must be positive, got {}", i, j, names[p],

@@ -44,6 +44,7 @@ class PairPDOrdinary : public PairPD {
   void stable_dt_sum(double *) override;
   void report_extra() override;
   void setup_run() override;
+  std::string family_settings() const override;
   void grow_state();
   double norm(int i) const;
 };
