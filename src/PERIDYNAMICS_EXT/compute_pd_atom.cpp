@@ -6,6 +6,7 @@
 #include "compute_pd_atom.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_pd_bonds.h"
 #include "force.h"
@@ -80,11 +81,18 @@ void ComputePDAtom::compute_peratom()
   }
 }
 
-// theta = 3 / m sum w s V: the linear (m = 1/2) dilatation with the bond
-// weights and weighted volume of the pair style (peri/lps's for its legacy
-// mode; sum V for pd/bond, whose bonds carry no weight).
+// The pair style's own dilatation when it has one (pd/ordinary: theta of
+// order m, as in its force state); otherwise theta = d / m sum w s V, the
+// linear dilatation with the bond weights and weighted volume (for pd/bond,
+// whose bonds carry no weight, m = sum V).
 void ComputePDAtom::dilatation(double *out)
 {
+  int dim = 0;
+  const double *theta = force->pair ? (const double *) force->pair->extract("theta", dim) : nullptr;
+  if (theta) {
+    for (int i = 0; i < atom->nlocal; i++) out[i] = theta[i];
+    return;
+  }
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) out[i] = 0.0;
   const pd_bond_view v = bonds->view();
@@ -93,7 +101,7 @@ void ComputePDAtom::dilatation(double *out)
   bonds->sum_to_owners(out);
   for (int i = 0; i < atom->nlocal; i++) {
     const double m = bonds->weighted_volume[i];
-    out[i] = m > 0.0 ? 3.0 * out[i] / m : 0.0;
+    out[i] = m > 0.0 ? domain->dimension * out[i] / m : 0.0;
   }
 }
 

@@ -111,6 +111,22 @@ set group all volume {VOLUME}
 """
 
 
+def plate(n, boundary="p p p"):
+    """A 2D square-lattice plate, 1 mm thick (volume = spacing^2 x thickness)."""
+    return f"""units si
+dimension 2
+boundary {boundary}
+atom_style peri
+atom_modify map array
+lattice sq {SPACING}
+region box block 0 {n} 0 {n} -0.5 0.5
+create_box 1 box
+create_atoms 1 box
+set group all density {DENSITY}
+set group all volume {SPACING * SPACING * 1e-3}
+"""
+
+
 # A rough velocity field (amplitude 0.5 m/s, strains ~1e-4), the same for
 # any rank count because it depends on atom IDs only.
 ROUGH_VELOCITY = """variable vx atom 0.5*sin(12.9898*id)
@@ -127,5 +143,8 @@ PAIRS = {
     "pd/ordinary legacy": f"pair_style pd/ordinary legacy\npair_coeff * * K {BULK} G {SHEAR} horizon {HORIZON} m 0.5\n",
     "pd/ordinary": f"pair_style pd/ordinary\npair_coeff * * K {BULK} G {SHEAR} horizon {HORIZON} m 0.5\n",
 }
+
+PAIRS["pd/ordinary 2D m=0"] = ("pair_style pd/ordinary plane stress thickness 1e-3\n"
+                               f"pair_coeff * * E 3.5e9 nu 0.35 horizon {HORIZON} m 0\n")
 
 DUMP = "write_dump all custom {file} id x y z modify sort id format float %.17g\n"

@@ -8,13 +8,18 @@ from lmptest import *
 
 d = workdir()
 run(block(16) + "write_data block.data\n", d)
-MOTION = ROUGH_VELOCITY + "velocity all set 200.0 NULL -100.0 sum yes units box\n"
-for style in ["pd/bond legacy", "pd/ordinary"]:
-    tag = style.replace(" ", "_").replace("/", "_")
+run(plate(40) + "write_data plate.data\n", d)
+for style in ["pd/bond legacy", "pd/ordinary", "pd/ordinary 2D m=0"]:
+    tag = style.replace(" ", "_").replace("/", "_").replace("=", "")
+    two_d = "2D" in style
+    MOTION = ROUGH_VELOCITY.replace("v_vz", "0.0" if two_d else "v_vz") + \
+        f"velocity all set 200.0 NULL {0.0 if two_d else -100.0} sum yes units box\n"
     final = {}
     for ranks in (1, 2, 4):
-        script = ("units si\nboundary p p p\natom_style peri\natom_modify map array\n"
-                  "read_data block.data\n" + ("lattice sc 0.0005\n" if "legacy" in style else "") +
+        script = (("dimension 2\n" if two_d else "") +
+                  "units si\nboundary p p p\natom_style peri\natom_modify map array\n" +
+                  f"read_data {'plate' if two_d else 'block'}.data\n" +
+                  ("lattice sc 0.0005\n" if "legacy" in style else "") +
                   MOTION + PAIRS[style] + "fix 1 all nve\ntimestep 1.0e-7\nthermo 100\nrun 200\n" +
                   DUMP.format(file=f"final.{tag}.{ranks}"))
         out, _ = run(script, d, ranks=ranks)

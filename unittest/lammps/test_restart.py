@@ -7,12 +7,14 @@ from lmptest import *
 
 d = workdir()
 # uniform drift so atoms cross the periodic boundary and get re-sorted
-MOTION = ROUGH_VELOCITY + "velocity all set 40.0 NULL NULL sum yes units box\n"
 STEPS = "fix 1 all nve\ntimestep 1.0e-7\nthermo 50\n"
-for style in ["pd/bond legacy", "pd/ordinary"]:
-    tag = style.replace(" ", "_").replace("/", "_")
-    run(block(12) + MOTION + PAIRS[style] + STEPS + "run 100\nrun 100\n" + DUMP.format(file="one." + tag), d)
-    run(block(12) + MOTION + PAIRS[style] + STEPS + f"run 100\nwrite_restart restart.{tag}\n", d)
+for style in ["pd/bond legacy", "pd/ordinary", "pd/ordinary 2D m=0"]:
+    tag = style.replace(" ", "_").replace("/", "_").replace("=", "")
+    body = plate(24) if "2D" in style else block(12)
+    MOTION = ROUGH_VELOCITY.replace("v_vz", "0.0" if "2D" in style else "v_vz") + \
+        "velocity all set 40.0 NULL NULL sum yes units box\n"
+    run(body + MOTION + PAIRS[style] + STEPS + "run 100\nrun 100\n" + DUMP.format(file="one." + tag), d)
+    run(body + MOTION + PAIRS[style] + STEPS + f"run 100\nwrite_restart restart.{tag}\n", d)
     out, _ = run(f"read_restart restart.{tag}\nfix 1 all nve\nthermo 50\nrun 100\n" +
                  DUMP.format(file="two." + tag), d)
     check(f"{style}: no families rebuilt after read_restart", "pd/bonds:" not in out)
