@@ -23,4 +23,7 @@ print("speed-up (legacy time / pd time):")
 for new, old in [("pd_bond", "peri_pmb"), ("pd_bond_legacy", "peri_pmb"),
                  ("pd_ordinary", "peri_lps"), ("pd_ordinary_legacy", "peri_lps")]:
     print(f"  {new:20s} vs {old:10s} {times[old] / times[new]:6.2f}x")
+print("cost of the nonlinear strain (time / time of m = 1/2):")
+for new in ("pd_ordinary_m0", "pd_ordinary_m-1"):
+    print(f"  {new:20s} {times[new] / times['pd_ordinary']:6.2f}x")
 PY

@@ -34,7 +34,7 @@ enum { HORIZON, BULK, SHEAR, YOUNG, POISSON, ORDER };
 PairPDOrdinary::PairPDOrdinary(LAMMPS *lmp) :
     PairPD(lmp, {"horizon", "K", "G", "E", "nu", "m"}), influence(-1),
     per_atom_norm(0), order(0.5), bulk_volume(nullptr), lambda_bar(nullptr), mu_bar(nullptr),
-    theta(nullptr), abstate(nullptr), nmax(0)
+    theta(nullptr), abstate(nullptr), nmax(0), strain(nullptr), nstrain(0)
 {
 }
 
@@ -45,6 +45,7 @@ PairPDOrdinary::~PairPDOrdinary()
   memory->destroy(bulk_volume);
   memory->destroy(lambda_bar);
   memory->destroy(mu_bar);
+  memory->destroy(strain);
 }
 
 void PairPDOrdinary::settings(int narg, char **arg)
@@ -182,7 +183,12 @@ void PairPDOrdinary::compute(int eflag, int vflag)
   double *sum = work;
   for (int i = 0; i < nall; i++) sum[i] = 0.0;
   const pd_bond_view v = bonds->view();
-  pd_ordinary_state st = {order, sum, abstate};
+  if (order != 0.5 && (bigint) v.nowner * v.stride > nstrain) {
+    nstrain = (bigint) atom->nmax * v.stride;
+    memory->destroy(strain);
+    memory->create(strain, nstrain, "pair:strain");
+  }
+  pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr};
   pd_ordinary_dilatation(&v, &st, atom->x[0], atom->vfrac);
   bonds->sum_to_owners(sum);
 

@@ -37,6 +37,8 @@ class PairPDOrdinary : public PairPD {
   double *theta;       // dilatation of owned atoms
   double *abstate;     // per atom A = lambda theta N, B = 2 mu N (owned + ghost)
   int nmax;
+  double *strain;      // per-bond strain, reused by the force pass (m != 1/2)
+  bigint nstrain;
 
   int parse_setting(int, char **, int) override;
   void check_coeff(int, int) override;

@@ -38,7 +38,10 @@ double ordinary_eval(const lattice *l, double lambda, double mu, double order,
   double *psi = calloc(n, sizeof(double));
   pd_bond_view v = lattice_view(l);
   pd_weighted_volume(&v, l->vol, m);
-  pd_ordinary_state st = {order, sum, ab};
+  double *strain = malloc(sizeof(double) * (size_t) l->stride * n);
+  /* use the per-bond strain cache on odd calls, so both paths are tested */
+  static int calls;
+  pd_ordinary_state st = {order, sum, ab, (calls++ & 1) ? strain : NULL};
   pd_ordinary_dilatation(&v, &st, x, l->vol);
   for (int i = 0; i < n; i++) {
     const pd_ordinary_atom_out o = pd_ordinary_atom(lambda, mu, dim / m[i], sum[i]);
@@ -56,6 +59,7 @@ double ordinary_eval(const lattice *l, double lambda, double mu, double order,
   free(m);
   free(sum);
   free(ab);
+  free(strain);
   free(psi);
   return e;
 }

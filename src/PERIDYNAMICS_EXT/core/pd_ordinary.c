@@ -46,7 +46,7 @@ static inline double bond_length(const double *restrict x, int i, int j, double 
 
 static inline __attribute__((always_inline)) void
 dilatation_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
-                const double *restrict x, const double *restrict vol, int kind)
+                const double *restrict x, const double *restrict vol, int kind, int cached)
 {
   double *restrict sum = st->sum;
   for (int i = 0; i < b->nowner; i++) {
@@ -57,8 +57,9 @@ dilatation_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
       const int j = b->far[row + k];
       double d[3];
       const double len = bond_length(x, i, j, d);
-      const double we = bond_weight(b, row + k) *
-                        bond_strain(kind, st->order, len, b->len0[row + k]);
+      const double eps = bond_strain(kind, st->order, len, b->len0[row + k]);
+      if (cached) st->strain[row + k] = eps;
+      const double we = bond_weight(b, row + k) * eps;
       si += we * vol[j];
       sum[j] += we * vol[i];
     }
@@ -69,17 +70,23 @@ dilatation_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
 void pd_ordinary_dilatation(const pd_bond_view *b, const pd_ordinary_state *st,
                             const double *x, const double *vol)
 {
+  const int cached = st->strain != NULL;
   switch (order_kind(st->order)) {
-  case ORDER_HALF: dilatation_loop(b, st, x, vol, ORDER_HALF); break;
-  case ORDER_LOG: dilatation_loop(b, st, x, vol, ORDER_LOG); break;
-  default: dilatation_loop(b, st, x, vol, ORDER_ANY); break;
+  case ORDER_HALF: dilatation_loop(b, st, x, vol, ORDER_HALF, 0); break;
+  case ORDER_LOG:
+    if (cached) dilatation_loop(b, st, x, vol, ORDER_LOG, 1);
+    else dilatation_loop(b, st, x, vol, ORDER_LOG, 0);
+    break;
+  default:
+    if (cached) dilatation_loop(b, st, x, vol, ORDER_ANY, 1);
+    else dilatation_loop(b, st, x, vol, ORDER_ANY, 0);
   }
 }
 
 static inline __attribute__((always_inline)) void
 force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
            const double *restrict x, const double *restrict vol,
-           double *restrict f, pd_tally *tally, int kind, int tallied)
+           double *restrict f, pd_tally *tally, int kind, int tallied, int cached)
 {
   const double *restrict ab = st->ab;
   const double m = st->order;
@@ -95,7 +102,7 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
       double d[3];
       const double len = bond_length(x, i, j, d);
       const double w = bond_weight(b, row + k);
-      const double eps = bond_strain(kind, m, len, r0);
+      const double eps = cached ? st->strain[row + k] : bond_strain(kind, m, len, r0);
       const double bj = ab[2 * j + 1];
       const double t = (ai + ab[2 * j] + (bi + bj) * eps) * w *
                        bond_strain_rate(kind, m, eps, len, r0);
@@ -120,22 +127,34 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
   }
 }
 
+/* Specialized copies: strain order x tally x strain cache (m != 1/2 only). */
+#define FORCE_VARIANT(kind, tallied, cached) \
+  force_loop(b, st, x, vol, f, (tallied) ? tally : NULL, kind, tallied, cached)
+
 void pd_ordinary_forces(const pd_bond_view *b, const pd_ordinary_state *st,
                         const double *x, const double *vol, double *f,
                         pd_tally *tally)
 {
   const int kind = order_kind(st->order);
-  if (tally) {
-    switch (kind) {
-    case ORDER_HALF: force_loop(b, st, x, vol, f, tally, ORDER_HALF, 1); break;
-    case ORDER_LOG: force_loop(b, st, x, vol, f, tally, ORDER_LOG, 1); break;
-    default: force_loop(b, st, x, vol, f, tally, ORDER_ANY, 1); break;
+  const int cached = st->strain != NULL && kind != ORDER_HALF;
+  if (kind == ORDER_HALF) {
+    if (tally) FORCE_VARIANT(ORDER_HALF, 1, 0);
+    else FORCE_VARIANT(ORDER_HALF, 0, 0);
+  } else if (kind == ORDER_LOG) {
+    if (tally) {
+      if (cached) FORCE_VARIANT(ORDER_LOG, 1, 1);
+      else FORCE_VARIANT(ORDER_LOG, 1, 0);
+    } else {
+      if (cached) FORCE_VARIANT(ORDER_LOG, 0, 1);
+      else FORCE_VARIANT(ORDER_LOG, 0, 0);
     }
   } else {
-    switch (kind) {
-    case ORDER_HALF: force_loop(b, st, x, vol, f, NULL, ORDER_HALF, 0); break;
-    case ORDER_LOG: force_loop(b, st, x, vol, f, NULL, ORDER_LOG, 0); break;
-    default: force_loop(b, st, x, vol, f, NULL, ORDER_ANY, 0); break;
+    if (tally) {
+      if (cached) FORCE_VARIANT(ORDER_ANY, 1, 1);
+      else FORCE_VARIANT(ORDER_ANY, 1, 0);
+    } else {
+      if (cached) FORCE_VARIANT(ORDER_ANY, 0, 1);
+      else FORCE_VARIANT(ORDER_ANY, 0, 0);
     }
   }
 }

@@ -17,6 +17,9 @@ typedef struct pd_ordinary_state {
   double order;   /* Seth-Hill order m */
   double *sum;     /* dilatation sums, before normalization */
   const double *ab;/* per atom, interleaved: A = lambda theta N, B = 2 mu N */
+  double *strain;  /* per-bond scratch laid out as the bonds, or NULL: for
+                      m != 1/2 the dilatation pass stores each bond's strain
+                      there and the force pass reuses it (one log per bond) */
 } pd_ordinary_state;
 
 /* Dilatation sums: st->sum[i] += w eps V_j, st->sum[j] += w eps V_i.
