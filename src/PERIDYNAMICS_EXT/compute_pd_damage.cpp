@@ -46,7 +46,7 @@ void ComputePDDamage::compute_peratom()
   for (int i = 0; i < nall; i++) damage[i] = 0.0;
   pd_bond_view v = bonds->view();
   v.weight = nullptr;
-  pd_weighted_volume(&v, atom->vfrac, damage);    // intact family volume
+  pd_intact_volume(&v, atom->vfrac, damage);    // intact family volume
   bonds->sum_to_owners(damage);
   for (int i = 0; i < atom->nlocal; i++) {
     const double all = bonds->family_volume[i];

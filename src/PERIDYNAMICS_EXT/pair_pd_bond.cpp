@@ -90,7 +90,7 @@ void PairPDBond::compute(int eflag, int vflag)
     pd_microplastic_forces(&v, &mat, &mp, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
     bonds->add_dissipated(mp.dissipated);
   } else {
-    pd_pmb_forces(&v, &mat, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
+    pd_pmb_forces(&v, &mat, nullptr, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
   }
   if (evflag) tally(t);
   pvector[0] = bonds->local_dissipated();    // compute pair sums it over ranks

@@ -188,8 +188,8 @@ void PairPDOrdinary::compute(int eflag, int vflag)
     memory->destroy(strain);
     memory->create(strain, nstrain, "pair:strain");
   }
-  pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr};
-  pd_ordinary_dilatation(&v, &st, atom->x[0], atom->vfrac);
+  pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr, atom->ntypes + 1, nullptr};
+  pd_ordinary_dilatation(&v, &st, nullptr, atom->x[0], atom->vfrac);
   bonds->sum_to_owners(sum);
 
   pd_tally t = {};
@@ -206,7 +206,7 @@ void PairPDOrdinary::compute(int eflag, int vflag)
     }
   }
   bonds->copy_to_ghosts(abstate, 2);
-  pd_ordinary_forces(&v, &st, atom->x[0], atom->vfrac, atom->f[0], evflag ? &t : nullptr);
+  pd_ordinary_forces(&v, &st, nullptr, atom->type, atom->x[0], atom->vfrac, atom->f[0], evflag ? &t : nullptr);
   if (evflag) tally(t);
 }
 

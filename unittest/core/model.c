@@ -21,15 +21,35 @@ double pmb_eval(const lattice *l, double c, const double *x, double *f, double *
   pd_pmb mat = {1, &c};
   pd_tally t = {0};
   t.eatom = psi;
-  pd_pmb_forces(&v, &mat, l->type, x, l->vol, f, &t);
+  pd_pmb_forces(&v, &mat, NULL, l->type, x, l->vol, f, &t);
   const double e = total(l, psi);
   if (psi_out) memcpy(psi_out, psi, sizeof(double) * l->natoms);
   free(psi);
   return e;
 }
 
+static double ordinary_run(const lattice *l, double lambda, double mu, double order,
+                           const double *mfixed, pd_failure *fail, const double *crit,
+                           const double *x, double *f, double *psi_out, double *theta_out,
+                           double *ab_out);
+
 double ordinary_eval(const lattice *l, double lambda, double mu, double order,
                      const double *x, double *f, double *psi_out, double *theta_out)
+{
+  return ordinary_run(l, lambda, mu, order, NULL, NULL, NULL, x, f, psi_out, theta_out, NULL);
+}
+
+double ordinary_eval_full(const lattice *l, double lambda, double mu, double order,
+                          const double *mfixed, pd_failure *fail, const double *crit,
+                          const double *x, double *f, double *ab_out)
+{
+  return ordinary_run(l, lambda, mu, order, mfixed, fail, crit, x, f, NULL, NULL, ab_out);
+}
+
+static double ordinary_run(const lattice *l, double lambda, double mu, double order,
+                           const double *mfixed, pd_failure *fail, const double *crit,
+                           const double *x, double *f, double *psi_out, double *theta_out,
+                           double *ab_out)
 {
   const int n = l->natoms;
   const int dim = l->natoms == l->n * l->n ? 2 : 3;
@@ -37,12 +57,13 @@ double ordinary_eval(const lattice *l, double lambda, double mu, double order,
   double *ab = calloc(2 * n, sizeof(double));
   double *psi = calloc(n, sizeof(double));
   pd_bond_view v = lattice_view(l);
-  pd_weighted_volume(&v, l->vol, m);
+  if (mfixed) memcpy(m, mfixed, sizeof(double) * n);
+  else pd_weighted_volume(&v, l->vol, m);
   double *strain = malloc(sizeof(double) * (size_t) l->stride * n);
   /* use the per-bond strain cache on odd calls, so both paths are tested */
   static int calls;
-  pd_ordinary_state st = {order, sum, ab, (calls++ & 1) ? strain : NULL};
-  pd_ordinary_dilatation(&v, &st, x, l->vol);
+  pd_ordinary_state st = {order, sum, ab, (calls++ & 1) ? strain : NULL, 1, crit};
+  pd_ordinary_dilatation(&v, &st, fail, x, l->vol);
   for (int i = 0; i < n; i++) {
     const pd_ordinary_atom_out o = pd_ordinary_atom(lambda, mu, dim / m[i], sum[i]);
     ab[2 * i] = o.a;
@@ -53,7 +74,8 @@ double ordinary_eval(const lattice *l, double lambda, double mu, double order,
   memset(f, 0, sizeof(double) * 3 * n);
   pd_tally t = {0};
   t.eatom = psi;
-  pd_ordinary_forces(&v, &st, x, l->vol, f, &t);
+  pd_ordinary_forces(&v, &st, fail, l->type, x, l->vol, f, &t);
+  if (ab_out) memcpy(ab_out, ab, sizeof(double) * 2 * n);
   const double e = total(l, psi);
   if (psi_out) memcpy(psi_out, psi, sizeof(double) * n);
   free(m);

@@ -121,7 +121,7 @@ int main(void)
     pd_microplastic mp2 = {&big, &plastic2, 0.0};
     x[3] = h * 1.01;
     pd_microplastic_forces(&v, &mat, &mp2, l.type, x, l.vol, g, NULL);
-    pd_pmb_forces(&v, &mat, l.type, x, l.vol, f2, NULL);
+    pd_pmb_forces(&v, &mat, NULL, l.type, x, l.vol, f2, NULL);
     check_true("microplastic with an unreachable yield stretch is PMB exactly", g[0] == f2[0] && g[3] == f2[3]);
     l.natoms = 8;
     lattice_free(&l);

@@ -7,11 +7,12 @@
  * each call site, so no copy carries a branch it does not need. */
 static inline __attribute__((always_inline)) void
 pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_microplastic *mp,
-         const int *restrict type, const double *restrict x,
+         pd_failure *fail, const int *restrict type, const double *restrict x,
          const double *restrict vol, double *restrict f, pd_tally *tally,
-         const int weighted, const int tallied, const int plastic)
+         const int weighted, const int tallied, const int plastic, const int failing)
 {
-  double work = 0.0;
+  double work = 0.0, released = 0.0, released_joule = 0.0;
+  long nbroken = 0;
   const int nt = mat->ntypes;
   for (int i = 0; i < b->nowner; i++) {
     const int n = b->count[i];
@@ -19,15 +20,23 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
     const int row = i * b->stride;
     const double *restrict ci = mat->c + type[i] * nt;
     const double *restrict syi = plastic ? mp->sy + type[i] * nt : NULL;
+    const double *restrict s0i = failing && fail->s0 ? fail->s0 + type[i] * nt : NULL;
     const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
     const double vi = vol[i];
     double fxi = 0.0, fyi = 0.0, fzi = 0.0;
     for (int k = 0; k < n; k++) {
       const int j = b->far[row + k];
-      const double r0 = b->len0[row + k];
+      double r0 = b->len0[row + k];
+      int broken = 0;
+      if (failing) {
+        broken = pd_bond_broken(r0);
+        r0 = fabs(r0);
+      }
       const double dx = x[3 * j] - xi, dy = x[3 * j + 1] - yi, dz = x[3 * j + 2] - zi;
       const double len = sqrt(dx * dx + dy * dy + dz * dz);
       double s = (len - r0) / r0;
+      /* a broken bond acts only while compressed, and only with recontact */
+      if (failing && broken && (s >= 0.0 || !fail->recontact)) continue;
       const double c = ci[type[j]];
       if (plastic) {
         /* return map: the elastic stretch s - sp stays within [-sy, sy] */
@@ -51,8 +60,8 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
       f[3 * j] -= vi * tl * dx;
       f[3 * j + 1] -= vi * tl * dy;
       f[3 * j + 2] -= vi * tl * dz;
+      const double w = 0.25 * t * s * r0; /* energy density per partner volume */
       if (tallied) {
-        const double w = 0.25 * t * s * r0;
         tally->energy += w * (vj + vi);
         if (tally->eatom) {
           tally->eatom[i] += w * vj;
@@ -61,37 +70,53 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
         const double d[3] = {-dx, -dy, -dz};
         pd_tally_virial(tally, d, -tl * vi * vj);
       }
+      /* critical stretch: the bond breaks after this step's force, releasing
+       * the energy it stores now */
+      if (failing && !broken && s0i && s > s0i[type[j]]) {
+        fail->len0[row + k] = -r0;
+        nbroken++;
+        released += w * (vj + vi);
+        released_joule += 2.0 * w * vi * vj;
+        if (fail->released_atom) {
+          fail->released_atom[i] += w * vj;
+          fail->released_atom[j] += w * vi;
+        }
+      }
     }
     f[3 * i] += fxi;
     f[3 * i + 1] += fyi;
     f[3 * i + 2] += fzi;
   }
   if (plastic) mp->dissipated += work;
+  if (failing) {
+    fail->released += released;
+    fail->released_joule += released_joule;
+    fail->nbroken += nbroken;
+  }
 }
 
-void pd_pmb_forces(const pd_bond_view *b, const pd_pmb *mat, const int *type,
+#define PMB_VARIANTS(mp, fail, plastic, failing)                                              \
+  do {                                                                                        \
+    const int weighted = b->weight != NULL;                                                   \
+    if (tally) {                                                                              \
+      if (weighted) pmb_loop(b, mat, mp, fail, type, x, vol, f, tally, 1, 1, plastic, failing); \
+      else pmb_loop(b, mat, mp, fail, type, x, vol, f, tally, 0, 1, plastic, failing);          \
+    } else {                                                                                  \
+      if (weighted) pmb_loop(b, mat, mp, fail, type, x, vol, f, NULL, 1, 0, plastic, failing);  \
+      else pmb_loop(b, mat, mp, fail, type, x, vol, f, NULL, 0, 0, plastic, failing);           \
+    }                                                                                         \
+  } while (0)
+
+void pd_pmb_forces(const pd_bond_view *b, const pd_pmb *mat, pd_failure *fail, const int *type,
                    const double *x, const double *vol, double *f, pd_tally *tally)
 {
-  const int weighted = b->weight != NULL;
-  if (tally) {
-    if (weighted) pmb_loop(b, mat, NULL, type, x, vol, f, tally, 1, 1, 0);
-    else pmb_loop(b, mat, NULL, type, x, vol, f, tally, 0, 1, 0);
-  } else {
-    if (weighted) pmb_loop(b, mat, NULL, type, x, vol, f, NULL, 1, 0, 0);
-    else pmb_loop(b, mat, NULL, type, x, vol, f, NULL, 0, 0, 0);
-  }
+  if (fail) PMB_VARIANTS(NULL, fail, 0, 1);
+  else PMB_VARIANTS(NULL, NULL, 0, 0);
 }
 
 void pd_microplastic_forces(const pd_bond_view *b, const pd_pmb *mat, pd_microplastic *mp,
                             const int *type, const double *x, const double *vol, double *f,
                             pd_tally *tally)
 {
-  const int weighted = b->weight != NULL;
-  if (tally) {
-    if (weighted) pmb_loop(b, mat, mp, type, x, vol, f, tally, 1, 1, 1);
-    else pmb_loop(b, mat, mp, type, x, vol, f, tally, 0, 1, 1);
-  } else {
-    if (weighted) pmb_loop(b, mat, mp, type, x, vol, f, NULL, 1, 0, 1);
-    else pmb_loop(b, mat, mp, type, x, vol, f, NULL, 0, 0, 1);
-  }
+  PMB_VARIANTS(mp, NULL, 1, 0);
 }

@@ -3,6 +3,7 @@
 #define PD_BOND_BASED_H
 
 #include "pd_bonds.h"
+#include "pd_failure.h"
 
 /* Micromoduli c per type pair, row-major ntypes x ntypes over the types
  * as indexed by the type array. */
@@ -22,9 +23,12 @@ typedef struct pd_microplastic {
 
 /* Force density on every bond end: f_i += V_j c s w e_ij, f_j -= V_i c s w e_ij,
  * with s the stretch and e_ij the unit vector from i to j. x, f: 3 per atom
- * over owned and ghost atoms; type: 0-based. When tally is not NULL, adds the
- * energy density 1/4 c s^2 |xi| w V_other to each end and the virial. */
-void pd_pmb_forces(const pd_bond_view *b, const pd_pmb *mat, const int *type,
+ * over owned and ghost atoms. When tally is not NULL, adds the energy density
+ * 1/4 c s^2 |xi| w V_other to each end and the virial. With fail (NULL: no
+ * bond is or can be broken) broken bonds act only in compression (recontact)
+ * and a bond whose stretch exceeds s0 breaks after this step, releasing its
+ * energy into fail's sums. */
+void pd_pmb_forces(const pd_bond_view *b, const pd_pmb *mat, pd_failure *fail, const int *type,
                    const double *x, const double *vol, double *f, pd_tally *tally);
 
 /* The same with microplastic bonds: updates plastic stretches, adds the

@@ -17,6 +17,9 @@ typedef struct pd_bond_view {
  * (w = 1 without weights: the family volume). */
 void pd_weighted_volume(const pd_bond_view *b, const double *vol, double *m);
 
+/* The same over intact bonds only (a broken bond has a negative length). */
+void pd_intact_volume(const pd_bond_view *b, const double *vol, double *m);
+
 /* Energy and virial, gathered only on steps that ask for them.
  * energy: sum of per-atom energy densities (the PERI convention);
  * virial: sum of (x_i - x_j) (x) F_ij with F_ij = V_i V_j (force state),

@@ -44,9 +44,17 @@ static inline double bond_length(const double *restrict x, int i, int j, double 
   return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
+/* A broken bond counts only while compressed, and only with recontact. */
+static inline __attribute__((always_inline)) int
+inactive(const pd_failure *fail, int broken, double eps)
+{
+  return broken && (eps >= 0.0 || !fail->recontact);
+}
+
 static inline __attribute__((always_inline)) void
 dilatation_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
-                const double *restrict x, const double *restrict vol, int kind, int cached)
+                const pd_failure *fail, const double *restrict x, const double *restrict vol,
+                int kind, int cached, int failing)
 {
   double *restrict sum = st->sum;
   for (int i = 0; i < b->nowner; i++) {
@@ -57,8 +65,10 @@ dilatation_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
       const int j = b->far[row + k];
       double d[3];
       const double len = bond_length(x, i, j, d);
-      const double eps = bond_strain(kind, st->order, len, b->len0[row + k]);
+      const double r0s = b->len0[row + k];
+      const double eps = bond_strain(kind, st->order, len, failing ? fabs(r0s) : r0s);
       if (cached) st->strain[row + k] = eps;
+      if (failing && inactive(fail, pd_bond_broken(r0s), eps)) continue;
       const double we = bond_weight(b, row + k) * eps;
       si += we * vol[j];
       sum[j] += we * vol[i];
@@ -67,45 +77,60 @@ dilatation_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
   }
 }
 
+#define DILATATION_VARIANT(kind, cached, failing) \
+  dilatation_loop(b, st, fail, x, vol, kind, cached, failing)
+
 void pd_ordinary_dilatation(const pd_bond_view *b, const pd_ordinary_state *st,
-                            const double *x, const double *vol)
+                            const pd_failure *fail, const double *x, const double *vol)
 {
-  const int cached = st->strain != NULL;
-  switch (order_kind(st->order)) {
-  case ORDER_HALF: dilatation_loop(b, st, x, vol, ORDER_HALF, 0); break;
-  case ORDER_LOG:
-    if (cached) dilatation_loop(b, st, x, vol, ORDER_LOG, 1);
-    else dilatation_loop(b, st, x, vol, ORDER_LOG, 0);
-    break;
-  default:
-    if (cached) dilatation_loop(b, st, x, vol, ORDER_ANY, 1);
-    else dilatation_loop(b, st, x, vol, ORDER_ANY, 0);
+  const int kind = order_kind(st->order);
+  const int code = (st->strain != NULL && kind != ORDER_HALF) * 2 + (fail != NULL);
+  switch (kind * 4 + code) {
+  case ORDER_HALF * 4 + 0: DILATATION_VARIANT(ORDER_HALF, 0, 0); break;
+  case ORDER_HALF * 4 + 1: DILATATION_VARIANT(ORDER_HALF, 0, 1); break;
+  case ORDER_LOG * 4 + 0: DILATATION_VARIANT(ORDER_LOG, 0, 0); break;
+  case ORDER_LOG * 4 + 1: DILATATION_VARIANT(ORDER_LOG, 0, 1); break;
+  case ORDER_LOG * 4 + 2: DILATATION_VARIANT(ORDER_LOG, 1, 0); break;
+  case ORDER_LOG * 4 + 3: DILATATION_VARIANT(ORDER_LOG, 1, 1); break;
+  case ORDER_ANY * 4 + 0: DILATATION_VARIANT(ORDER_ANY, 0, 0); break;
+  case ORDER_ANY * 4 + 1: DILATATION_VARIANT(ORDER_ANY, 0, 1); break;
+  case ORDER_ANY * 4 + 2: DILATATION_VARIANT(ORDER_ANY, 1, 0); break;
+  default: DILATATION_VARIANT(ORDER_ANY, 1, 1); break;
   }
 }
 
 static inline __attribute__((always_inline)) void
-force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
-           const double *restrict x, const double *restrict vol,
-           double *restrict f, pd_tally *tally, int kind, int tallied, int cached)
+force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failure *fail,
+           const int *restrict type, const double *restrict x, const double *restrict vol,
+           double *restrict f, pd_tally *tally, int kind, int tallied, int cached, int failing)
 {
   const double *restrict ab = st->ab;
   const double m = st->order;
+  const int nt = st->ntypes;
+  double released = 0.0, released_joule = 0.0;
+  long nbroken = 0;
   for (int i = 0; i < b->nowner; i++) {
     const int n = b->count[i];
     if (!n) continue;
     const int row = i * b->stride;
     const double ai = ab[2 * i], bi = ab[2 * i + 1], vi = vol[i];
+    const double *restrict s0i = failing && fail->s0 ? fail->s0 + type[i] * nt : NULL;
     double fi[3] = {0.0, 0.0, 0.0};
     for (int k = 0; k < n; k++) {
       const int j = b->far[row + k];
-      const double r0 = b->len0[row + k];
+      double r0 = b->len0[row + k];
+      int broken = 0;
+      if (failing) {
+        broken = pd_bond_broken(r0);
+        r0 = fabs(r0);
+      }
       double d[3];
       const double len = bond_length(x, i, j, d);
       const double w = bond_weight(b, row + k);
       const double eps = cached ? st->strain[row + k] : bond_strain(kind, m, len, r0);
-      const double bj = ab[2 * j + 1];
-      const double t = (ai + ab[2 * j] + (bi + bj) * eps) * w *
-                       bond_strain_rate(kind, m, eps, len, r0);
+      if (failing && inactive(fail, broken, eps)) continue;
+      const double aj = ab[2 * j], bj = ab[2 * j + 1];
+      const double t = (ai + aj + (bi + bj) * eps) * w * bond_strain_rate(kind, m, eps, len, r0);
       const double tl = len > 0.0 ? t / len : 0.0;
       const double vj = vol[j];
       for (int c = 0; c < 3; c++) {
@@ -122,40 +147,63 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
         const double dij[3] = {-d[0], -d[1], -d[2]};
         pd_tally_virial(tally, dij, -tl * vi * vj);
       }
+      if (failing && !broken && eps > 0.0) {
+        /* instantaneous bond energy at each end, per partner volume (T14
+         * eq. 6.5): s = w eps (A + B eps / 2) */
+        const double si = w * eps * (ai + 0.5 * bi * eps), sj = w * eps * (aj + 0.5 * bj * eps);
+        const int breaks = fail->law == PD_FAIL_STRETCH
+            ? len / r0 - 1.0 > s0i[type[j]]
+            : (si + sj) * r0 * r0 >= w * (st->crit[i] + st->crit[j]);
+        if (breaks) {
+          fail->len0[row + k] = -r0;
+          nbroken++;
+          released += si * vj + sj * vi;
+          released_joule += (si + sj) * vi * vj;
+          if (fail->released_atom) {
+            fail->released_atom[i] += si * vj;
+            fail->released_atom[j] += sj * vi;
+          }
+        }
+      }
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
   }
+  if (failing) {
+    fail->released += released;
+    fail->released_joule += released_joule;
+    fail->nbroken += nbroken;
+  }
 }
 
-/* Specialized copies: strain order x tally x strain cache (m != 1/2 only). */
-#define FORCE_VARIANT(kind, tallied, cached) \
-  force_loop(b, st, x, vol, f, (tallied) ? tally : NULL, kind, tallied, cached)
+#define FORCE_VARIANT(kind, tallied, cached, failing) \
+  force_loop(b, st, fail, type, x, vol, f, (tallied) ? tally : NULL, kind, tallied, cached, failing)
 
-void pd_ordinary_forces(const pd_bond_view *b, const pd_ordinary_state *st,
-                        const double *x, const double *vol, double *f,
+/* Specialized copies: strain order x tally x strain cache (m != 1/2 only)
+ * x failure. */
+#define FORCE_BY_ORDER(kind, cached)                     \
+  do {                                                   \
+    if (tally) {                                         \
+      if (fail) FORCE_VARIANT(kind, 1, cached, 1);       \
+      else FORCE_VARIANT(kind, 1, cached, 0);            \
+    } else {                                             \
+      if (fail) FORCE_VARIANT(kind, 0, cached, 1);       \
+      else FORCE_VARIANT(kind, 0, cached, 0);            \
+    }                                                    \
+  } while (0)
+
+void pd_ordinary_forces(const pd_bond_view *b, const pd_ordinary_state *st, pd_failure *fail,
+                        const int *type, const double *x, const double *vol, double *f,
                         pd_tally *tally)
 {
   const int kind = order_kind(st->order);
   const int cached = st->strain != NULL && kind != ORDER_HALF;
-  if (kind == ORDER_HALF) {
-    if (tally) FORCE_VARIANT(ORDER_HALF, 1, 0);
-    else FORCE_VARIANT(ORDER_HALF, 0, 0);
-  } else if (kind == ORDER_LOG) {
-    if (tally) {
-      if (cached) FORCE_VARIANT(ORDER_LOG, 1, 1);
-      else FORCE_VARIANT(ORDER_LOG, 1, 0);
-    } else {
-      if (cached) FORCE_VARIANT(ORDER_LOG, 0, 1);
-      else FORCE_VARIANT(ORDER_LOG, 0, 0);
-    }
+  if (kind == ORDER_HALF) FORCE_BY_ORDER(ORDER_HALF, 0);
+  else if (kind == ORDER_LOG) {
+    if (cached) FORCE_BY_ORDER(ORDER_LOG, 1);
+    else FORCE_BY_ORDER(ORDER_LOG, 0);
   } else {
-    if (tally) {
-      if (cached) FORCE_VARIANT(ORDER_ANY, 1, 1);
-      else FORCE_VARIANT(ORDER_ANY, 1, 0);
-    } else {
-      if (cached) FORCE_VARIANT(ORDER_ANY, 0, 1);
-      else FORCE_VARIANT(ORDER_ANY, 0, 0);
-    }
+    if (cached) FORCE_BY_ORDER(ORDER_ANY, 1);
+    else FORCE_BY_ORDER(ORDER_ANY, 0);
   }
 }
 

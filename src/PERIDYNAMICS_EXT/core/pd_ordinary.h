@@ -11,6 +11,7 @@
 #define PD_ORDINARY_H
 
 #include "pd_bonds.h"
+#include "pd_failure.h"
 
 /* Per-step work arrays over owned and ghost atoms. */
 typedef struct pd_ordinary_state {
@@ -20,19 +21,27 @@ typedef struct pd_ordinary_state {
   double *strain;  /* per-bond scratch laid out as the bonds, or NULL: for
                       m != 1/2 the dilatation pass stores each bond's strain
                       there and the force pass reuses it (one log per bond) */
+  int ntypes;      /* row length of the failure tables (stretch law) */
+  const double *crit; /* per atom beta N (energy law, owned + ghost), or NULL */
 } pd_ordinary_state;
 
 /* Dilatation sums: st->sum[i] += w eps V_j, st->sum[j] += w eps V_i.
  * The caller zeroes st->sum over owned and ghost atoms and then sums the
  * ghosts' share onto their owners. */
 void pd_ordinary_dilatation(const pd_bond_view *b, const pd_ordinary_state *st,
-                            const double *x, const double *vol);
+                            const pd_failure *fail, const double *x, const double *vol);
 
 /* Force density on every bond end; with tally, the bond part of the energy
  * (B/2 w eps^2 V_other at each end) and the virial. The dilatation part of
- * the energy is per atom: see pd_ordinary_atom. */
-void pd_ordinary_forces(const pd_bond_view *b, const pd_ordinary_state *st,
-                        const double *x, const double *vol, double *f,
+ * the energy is per atom: see pd_ordinary_atom. With fail (NULL: no bond is
+ * or can be broken), broken bonds act only in compression (recontact), and
+ * an intact bond in tension breaks after this step when its stretch exceeds
+ * s0 (stretch law) or when the instantaneous bond energies at its ends,
+ * s = w eps (A + B eps / 2) per partner volume (T14 eq. 6.5), reach
+ * s_c(i) + s_c(j) = w (crit_i + crit_j) / |xi|^2 (energy law, T14 eq. 6.3,
+ * crit = beta N). The released energy is s_i V_j + s_j V_i. */
+void pd_ordinary_forces(const pd_bond_view *b, const pd_ordinary_state *st, pd_failure *fail,
+                        const int *type, const double *x, const double *vol, double *f,
                         pd_tally *tally);
 
 /* Per-atom state from the summed dilatation: theta, A, B and the

@@ -1,0 +1,44 @@
+/* Bond failure (MS07 eq. 25-31; T14 ch. 6): laws, calibration, and the
+ * state a failure-aware kernel updates.
+ *
+ * A broken bond is stored with a negative reference length: the sign is the
+ * one bit of failure state, so a scene without failure keeps no extra
+ * per-bond memory. With recontact (the default, T14 6.1.3) a broken bond
+ * still acts while it is compressed; without it, it never acts again. */
+#ifndef PD_FAILURE_H
+#define PD_FAILURE_H
+
+#include "pd_influence.h"
+
+typedef enum pd_fail_law { PD_FAIL_NONE, PD_FAIL_STRETCH, PD_FAIL_ENERGY } pd_fail_law;
+
+static inline int pd_bond_broken(double len0) { return len0 < 0.0; }
+
+typedef struct pd_failure {
+  pd_fail_law law;
+  int recontact;          /* broken bonds still push in compression */
+  const double *s0;       /* critical stretch per type pair (stretch law) */
+  double *len0;           /* the bonds' reference lengths, written on breaking */
+  double *released_atom;  /* per-atom released energy density (owned + ghost), or NULL */
+  double released;        /* added by each call: sum of energy densities released */
+  double released_joule;  /* the same in joules (volume-weighted) */
+  long nbroken;           /* bonds broken by each call */
+} pd_failure;
+
+/* Energy-based failure (T14 eq. 6.1-6.3): s_c(xi) = beta omega |xi|^-2 with
+ * omega the influence function normalized to integrate to d over the
+ * horizon. Cutting every bond across a unit area releases, bond by bond,
+ * s_c at both ends: G_c = 2 I with I = pi int_0^delta r omega dr (3D) or
+ * 2 int_0^delta omega dr (2D), integrated numerically here. Returns beta
+ * for a given G_c, or a negative value when the integral diverges (the 2D
+ * inverse influence). */
+double pd_energy_failure_beta(pd_influence_kind kind, int dim, double delta, double Gc);
+
+/* Critical stretch from the fracture energy for bond-based elasticity
+ * (MS07 eq. 28-29 and the 2D analogues in THEORY.md): 3D sqrt(5 G / (9 K
+ * delta)) with K = E / (3 (1 - 2 nu)), plane stress sqrt(4 pi G / (9 E delta)),
+ * plane strain sqrt(5 pi G / (12 E delta)). dim: 3, or 2 with plane = 0
+ * (stress) or 1 (strain). */
+double pd_critical_stretch(int dim, int plane_strain, double E, double nu, double delta, double Gc);
+
+#endif

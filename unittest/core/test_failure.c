@@ -1,0 +1,153 @@
+/* Bond failure (T14 ch. 6, MS07 eq. 25-31): calibration integrals, the
+ * instantaneous bond energy, breaking and energy release, pre-crack
+ * geometry. */
+#include "check.h"
+#include "common.h"
+#include "model.h"
+#include "pd_bond_based.h"
+#include "pd_failure.h"
+#include "pd_params.h"
+#include "pd_precrack.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+int main(void)
+{
+  const double delta = 0.0055, Gc = 400.0; /* PMMA, T14 6.2.1 */
+  /* beta in closed form for Tupek's polynomials (THEORY.md): the thesis'
+   * 2D value pi delta Gc / 16, and 16 delta Gc / 63 in 3D (eq. 6.1 gives
+   * 63 beta / (32 delta) for the one-sided integral: no factor pi). */
+  check_rel("2D Tupek beta = pi delta Gc / 16 (T14)", pd_energy_failure_beta(PD_INFLUENCE_TUPEK, 2, delta, Gc),
+            M_PI * delta * Gc / 16.0, 1e-8);
+  check_rel("3D Tupek beta = 16 delta Gc / 63", pd_energy_failure_beta(PD_INFLUENCE_TUPEK, 3, delta, Gc),
+            16.0 * delta * Gc / 63.0, 1e-8);
+  /* constant omega, closed forms: 3D omega = 9 / (4 pi delta^3),
+   * I = pi beta omega delta^2 / 2 -> beta = 4 delta Gc / 9; 2D omega =
+   * 2 / (pi delta^2), I = 2 beta omega delta -> beta = pi delta Gc / 8 */
+  check_rel("3D constant beta = 4 delta Gc / 9", pd_energy_failure_beta(PD_INFLUENCE_CONSTANT, 3, delta, Gc),
+            4.0 * delta * Gc / 9.0, 1e-8);
+  check_rel("2D constant beta = pi delta Gc / 8", pd_energy_failure_beta(PD_INFLUENCE_CONSTANT, 2, delta, Gc),
+            M_PI * delta * Gc / 8.0, 1e-8);
+  check_true("2D inverse influence: G_c integral diverges (refused)",
+             pd_energy_failure_beta(PD_INFLUENCE_INVERSE, 2, delta, Gc) < 0.0);
+  /* critical stretch from G_c, MS07 eq. 29 in 3D */
+  check_rel("3D s0 = sqrt(5 G / (9 K delta))", pd_critical_stretch(3, 0, 3.0e9, 0.25, 1e-3, 100.0),
+            sqrt(5.0 * 100.0 / (9.0 * 2.0e9 * 1e-3)), 1e-14);
+
+  /* The instantaneous bond energy (T14 eq. 6.5): the derivative of the
+   * total energy with respect to a bond's weight, at fixed normalization,
+   * is V_i V_j (s_i + s_j) with s = w eps (A + B eps / 2). */
+  {
+    const double h = 5e-4;
+    lattice l = lattice_make(3, 5, h, 2.0001 * h, PD_INFLUENCE_TUPEK);
+    const int n = l.natoms;
+    double *x = malloc(sizeof(double) * 3 * n), *f = malloc(sizeof(double) * 3 * n);
+    double *m = calloc(n, sizeof(double)), *ab = malloc(sizeof(double) * 2 * n);
+    random_displacement(&l, 0.01 * h, 21, x);
+    pd_bond_view v = lattice_view(&l);
+    pd_weighted_volume(&v, l.vol, m);
+    const pd_lame bar = pd_ordinary_lame_3d(14.9e9, 7e9);
+    const double orders[] = {0.5, 0.0};
+    for (int q = 0; q < 2; q++) {
+      const int i = lattice_center(&l), slot = i * l.stride; /* first bond of the centre */
+      const int j = l.far[slot];
+      const double w = l.weight[slot], r0 = l.len0[slot];
+      ordinary_eval_full(&l, bar.lambda, bar.mu, orders[q], m, NULL, NULL, x, f, ab);
+      double d[3];
+      for (int c = 0; c < 3; c++) d[c] = x[3 * j + c] - x[3 * i + c];
+      const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      const double eps = orders[q] == 0.5 ? len / r0 - 1.0 : log(len / r0);
+      const double si = w * eps * (ab[2 * i] + 0.5 * ab[2 * i + 1] * eps);
+      const double sj = w * eps * (ab[2 * j] + 0.5 * ab[2 * j + 1] * eps);
+      const double step = 1e-4;
+      l.weight[slot] = w * (1 + step);
+      const double ep = ordinary_eval_full(&l, bar.lambda, bar.mu, orders[q], m, NULL, NULL, x, f, NULL);
+      l.weight[slot] = w * (1 - step);
+      const double em = ordinary_eval_full(&l, bar.lambda, bar.mu, orders[q], m, NULL, NULL, x, f, NULL);
+      l.weight[slot] = w;
+      /* d E / d phi with phi scaling the weight; central difference, step 1e-4:
+       * the energy is quadratic in phi, so the difference is exact up to
+       * round-off (~1e-12 E / 1e-4) */
+      char what[80];
+      snprintf(what, sizeof what, "s_inst = dE/d(weight) for m = %g (T14 eq. 6.5)", orders[q]);
+      check_rel(what, (ep - em) / (2 * step), l.vol[i] * l.vol[j] * (si + sj), 1e-6);
+    }
+    /* Energy law, end to end: a uniform stretch well above the critical one
+     * breaks every bond in tension at once, and the energy released equals
+     * the drop of the elastic energy to first order (the dilatation term is
+     * quadratic in the cut bonds: the drop exceeds the sum of s_inst by
+     * lambda/2 (cut dilatation)^2, zero here with lambda_bar = 0). */
+    const pd_lame b0 = {0.0, 5e9};
+    const double s = 1e-2;
+    const double e[3][3] = {{s, 0, 0}, {0, s, 0}, {0, 0, s}};
+    lattice_strain(&l, e, x);
+    double *crit = calloc(n, sizeof(double));
+    double *len0 = l.len0;
+    pd_failure fail = {PD_FAIL_ENERGY, 1, NULL, len0, NULL, 0.0, 0.0, 0};
+    for (int a = 0; a < n; a++) crit[a] = 1e-30; /* tiny beta N: everything in tension breaks */
+    const double before = ordinary_eval_full(&l, b0.lambda, b0.mu, 0.5, m, &fail, crit, x, f, NULL);
+    long nb = 0;
+    for (int a = 0; a < n; a++) nb += l.count[a];
+    check_true("energy law: every bond in tension breaks", fail.nbroken == nb);
+    pd_failure after_fail = {PD_FAIL_ENERGY, 1, NULL, len0, NULL, 0.0, 0.0, 0};
+    const double after = ordinary_eval_full(&l, b0.lambda, b0.mu, 0.5, m, &after_fail, crit, x, f, NULL);
+    check_rel("energy law: released energy = elastic energy lost (lambda_bar = 0)", fail.released_joule,
+              before - after, 1e-12);
+    check_true("broken bonds carry no tension afterwards", after == 0.0 && after_fail.nbroken == 0);
+    /* recontact: compress instead, and the broken bonds push again */
+    const double ec[3][3] = {{-s, 0, 0}, {0, -s, 0}, {0, 0, -s}};
+    lattice_strain(&l, ec, x);
+    pd_failure comp = {PD_FAIL_ENERGY, 1, NULL, len0, NULL, 0.0, 0.0, 0};
+    const double e_re = ordinary_eval_full(&l, b0.lambda, b0.mu, 0.5, m, &comp, crit, x, f, NULL);
+    comp.recontact = 0;
+    const double e_no = ordinary_eval_full(&l, b0.lambda, b0.mu, 0.5, m, &comp, crit, x, f, NULL);
+    check_true("recontact: broken bonds resist compression (energy > 0), without it none", e_re > 0.0 && e_no == 0.0);
+    lattice_free(&l);
+    free(x);
+    free(f);
+    free(m);
+    free(ab);
+    free(crit);
+  }
+  /* PMB critical stretch on one bond: breaks above s0 only, releasing the
+   * bond's energy 1/2 c s^2 |xi| V_i V_j. */
+  {
+    const double h = 1e-3, c = 1e18, s0 = 0.01;
+    lattice l = lattice_make(3, 2, h, 1.0001 * h, -1);
+    l.natoms = 2;
+    l.count[0] = 1;
+    l.count[1] = 0;
+    l.vol[0] = 2e-9;
+    l.vol[1] = 3e-9;
+    pd_bond_view v = lattice_view(&l);
+    pd_pmb mat = {1, &c};
+    double x[6] = {0, 0, 0, h * 1.009, 0, 0}, f[6] = {0};
+    pd_failure fail = {PD_FAIL_STRETCH, 1, &s0, l.len0, NULL, 0.0, 0.0, 0};
+    pd_pmb_forces(&v, &mat, &fail, l.type, x, l.vol, f, NULL);
+    check_true("PMB: below s0 nothing breaks", fail.nbroken == 0 && l.len0[0] > 0.0);
+    x[3] = h * 1.011;
+    pd_pmb_forces(&v, &mat, &fail, l.type, x, l.vol, f, NULL);
+    check_true("PMB: above s0 the bond breaks", fail.nbroken == 1 && l.len0[0] < 0.0);
+    const double sb = 0.011;
+    check_rel("PMB: released energy 1/2 c s^2 |xi| V_i V_j", fail.released_joule,
+              0.5 * c * sb * sb * h * 2e-9 * 3e-9, 1e-9);
+    l.natoms = 8;
+    lattice_free(&l);
+  }
+  /* Pre-crack geometry. */
+  {
+    const double a[2] = {0, 0}, b[2] = {1, 0};
+    const double p[2] = {0.5, -0.1}, q[2] = {0.5, 0.1}, r[2] = {1.5, 0.1}, s[2] = {1.5, -0.1};
+    const double t[2] = {0.5, 0.0}, u[2] = {0.7, 0.3};
+    check_true("2D: a bond across the crack crosses it", pd_crosses_segment(p, q, a, b));
+    check_true("2D: a bond beside the crack's end does not", !pd_crosses_segment(r, s, a, b));
+    check_true("2D: a bond ending on the crack line does not", !pd_crosses_segment(t, u, a, b));
+    const double o[3] = {0, 0, 0}, e1[3] = {1, 0, 0}, e2[3] = {0, 1, 0};
+    const double p3[3] = {0.5, 0.5, -0.1}, q3[3] = {0.5, 0.5, 0.1}, r3[3] = {1.5, 0.5, -0.1}, s3[3] = {1.5, 0.5, 0.1};
+    check_true("3D: a bond through the patch crosses it", pd_crosses_patch(p3, q3, o, e1, e2));
+    check_true("3D: a bond beside the patch does not", !pd_crosses_patch(r3, s3, o, e1, e2));
+    check_true("3D: a bond parallel to the patch does not", !pd_crosses_patch(p3, r3, o, e1, e2));
+  }
+  return check_summary();
+}
