@@ -25,7 +25,7 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-static constexpr int PER_ATOM_FIXED = 4;    // count, own tag, family and weighted volume
+static constexpr int PER_ATOM_FIXED = 5;    // count, own tag, family and weighted volume, dissipated
 
 // Which end stores a bond: the smaller tag when the tags' sum is even, the
 // larger when odd. Either rule stores each bond once; alternating keeps the
@@ -37,9 +37,10 @@ static inline bool owns_bond(tagint me, tagint other)
 }
 
 FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), owner(nullptr), built_tag(nullptr),
+    Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), dissipated_atom(nullptr), owner(nullptr), built_tag(nullptr),
     use_weights(0), nhistory(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
-    r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), dissipated(0.0), family_key(0.0), list(nullptr),
+    r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), dissipated(0.0), dissipated_joule(0.0), nbroken_local(0), any_broken(0),
+    family_key(0.0), list(nullptr),
     comm_array(nullptr), comm_width(1)
 {
   if (narg != 6 || strcmp(arg[4], "history") != 0)
@@ -80,6 +81,7 @@ FixPDBonds::~FixPDBonds()
   memory->destroy(family_volume);
   memory->destroy(weighted_volume);
   memory->destroy(built_tag);
+  memory->destroy(dissipated_atom);
 }
 
 int FixPDBonds::setmask()
@@ -362,6 +364,7 @@ void FixPDBonds::grow_arrays(int nmax)
   memory->grow(family_volume, nmax, "pd/bonds:family_volume");
   memory->grow(weighted_volume, nmax, "pd/bonds:weighted_volume");
   memory->grow(built_tag, nmax, "pd/bonds:built_tag");
+  memory->grow(dissipated_atom, nmax, "pd/bonds:dissipated_atom");
 }
 
 void FixPDBonds::copy_arrays(int i, int j, int)
@@ -376,6 +379,7 @@ void FixPDBonds::copy_arrays(int i, int j, int)
   family_volume[j] = family_volume[i];
   weighted_volume[j] = weighted_volume[i];
   built_tag[j] = built_tag[i];
+  dissipated_atom[j] = dissipated_atom[i];
 }
 
 // Atoms created after the families were built join without bonds.
@@ -383,7 +387,7 @@ void FixPDBonds::set_arrays(int i)
 {
   npartner[i] = 0;
   built_tag[i] = 0;
-  family_volume[i] = weighted_volume[i] = 0.0;
+  family_volume[i] = weighted_volume[i] = dissipated_atom[i] = 0.0;
 }
 
 int FixPDBonds::per_atom_doubles(int i) const
@@ -392,7 +396,8 @@ int FixPDBonds::per_atom_doubles(int i) const
 }
 
 // Layout shared by exchange and restart: count, own tag at build, family
-// volume, weighted volume, then per bond: tag, r0 [, weight] [, history].
+// volume, weighted volume, dissipated energy, then per bond: tag, r0 (its
+// sign: broken) [, weight] [, history].
 int FixPDBonds::pack_exchange(int i, double *buf)
 {
   int m = 0;
@@ -400,6 +405,7 @@ int FixPDBonds::pack_exchange(int i, double *buf)
   buf[m++] = ubuf(built_tag[i]).d;
   buf[m++] = family_volume[i];
   buf[m++] = weighted_volume[i];
+  buf[m++] = dissipated_atom[i];
   for (int k = 0; k < npartner[i]; k++) {
     buf[m++] = ubuf(partner[i][k]).d;
     buf[m++] = r0[i][k];
@@ -417,6 +423,7 @@ int FixPDBonds::unpack_exchange(int i, double *buf)
   built_tag[i] = (tagint) ubuf(buf[m++]).i;
   family_volume[i] = buf[m++];
   weighted_volume[i] = buf[m++];
+  dissipated_atom[i] = buf[m++];
   for (int k = 0; k < npartner[i]; k++) {
     partner[i][k] = (tagint) ubuf(buf[m++]).i;
     r0[i][k] = buf[m++];
@@ -428,14 +435,17 @@ int FixPDBonds::unpack_exchange(int i, double *buf)
 
 void FixPDBonds::write_restart(FILE *fp)
 {
-  double total_lost = compute_scalar(), total_dissipated = 0.0;
-  MPI_Allreduce(&dissipated, &total_dissipated, 1, MPI_DOUBLE, MPI_SUM, world);
+  double total_lost = compute_scalar(), sums[2], mine[2] = {dissipated, dissipated_joule};
+  MPI_Allreduce(mine, sums, 2, MPI_DOUBLE, MPI_SUM, world);
+  bigint total_broken = 0;
+  MPI_Allreduce(&nbroken_local, &total_broken, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (comm->me == 0) {
-    double list[7] = {(double) built, (double) maxpartner, (double) use_weights, total_lost,
-                      (double) nhistory, total_dissipated, family_key};
+    double list[10] = {(double) built, (double) maxpartner, (double) use_weights, total_lost,
+                       (double) nhistory, sums[0], family_key, sums[1], (double) total_broken,
+                       (double) any_broken};
     int size = sizeof(list);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 7, fp);
+    fwrite(list, sizeof(double), 10, fp);
   }
 }
 
@@ -454,6 +464,9 @@ void FixPDBonds::restart(char *buf)
   nlost_local = comm->me == 0 ? (bigint) list[3] : 0;
   dissipated = comm->me == 0 ? list[5] : 0.0;
   family_key = list[6];
+  dissipated_joule = comm->me == 0 ? list[7] : 0.0;
+  nbroken_local = comm->me == 0 ? (bigint) list[8] : 0;
+  any_broken = (int) list[9];
   memory->destroy(partner);
   memory->destroy(r0);
   memory->destroy(weight);

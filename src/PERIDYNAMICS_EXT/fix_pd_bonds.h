@@ -59,9 +59,24 @@ class FixPDBonds : public Fix {
   // per-bond history values (nhistory per bond, laid out as the bonds), or null
   double *history_data() const { return nhistory && history ? history[0] : nullptr; }
   double bytes_per_bond() const;
-  // energy dissipated in the bonds (plastic work, ...): this rank's share
-  void add_dissipated(double e) { dissipated += e; }
+  // energy dissipated in the bonds (plastic work, fracture): this rank's
+  // share, as a sum of energy densities and in joules
+  void add_dissipated(double e, double joule = 0.0)
+  {
+    dissipated += e;
+    dissipated_joule += joule;
+  }
   double local_dissipated() const { return dissipated; }
+  double local_dissipated_joule() const { return dissipated_joule; }
+  // broken bonds: the sign of the reference length (pd_failure.h)
+  double *len0_data() const { return r0 ? r0[0] : nullptr; }
+  void add_broken(bigint n) { nbroken_local += n; }
+  bigint local_broken() const { return nbroken_local; }
+  bigint local_lost() const { return nlost_local; }
+  bool has_broken() const { return any_broken; }
+  void set_has_broken() { any_broken = 1; }
+  // per-atom dissipated energy density (owned atoms; migrates, restarts)
+  double *dissipated_atom;
 
   // Sum a per-atom array's ghost entries onto their owners, or copy the
   // owners' entries to their ghosts; 'width' doubles per atom, at most 2.
@@ -88,6 +103,9 @@ class FixPDBonds : public Fix {
   int **far;               // far end as a local index (owned+ghost)
   bigint nlost_local;      // bonds dropped because the partner was lost
   double dissipated;       // this rank's share of the dissipated energy
+  double dissipated_joule; // the same in joules
+  bigint nbroken_local;    // bonds broken on this rank (fracture, not pre-cracks)
+  int any_broken;          // some bond anywhere is broken (pre-crack or fracture)
   double family_key;       // hash of the pair settings the families were built for
   class NeighList *list;
   double *comm_array;

@@ -30,10 +30,15 @@ using namespace LAMMPS_NS;
 static const char *const FIX_ID = "PD_BONDS";
 
 PairPD::PairPD(LAMMPS *lmp, const std::vector<std::string> &coef_names) :
-    Pair(lmp), names(coef_names), coef(nullptr), legacy(0), model_dim(PD_3D), thickness(0.0),
-    lattice_spacing(0.0), bonds(nullptr),
+    Pair(lmp), names(coef_names), coef(nullptr), legacy(0), recontact(1), law(PD_FAIL_NONE),
+    ifail(-1), is0(-1), iGc(-1), model_dim(PD_3D), thickness(0.0), lattice_spacing(0.0),
+    bonds(nullptr), released(nullptr), nreleased(0),
     report_pending(0), work(nullptr), nwork(0)
 {
+  names.insert(names.end(), {"fail", "s0", "Gc"});
+  ifail = coef_index("fail");
+  is0 = coef_index("s0");
+  iGc = coef_index("Gc");
   restartinfo = 1;
   single_enable = 0;
   no_virial_fdotr_compute = 1;
@@ -49,6 +54,7 @@ PairPD::~PairPD()
     delete[] coef;
   }
   memory->destroy(work);
+  memory->destroy(released);
 }
 
 void PairPD::allocate()
@@ -84,13 +90,15 @@ int PairPD::coef_index(const std::string &name) const
 void PairPD::settings(int narg, char **arg)
 {
   legacy = 0;
+  recontact = 1;
   model_dim = PD_3D;
   thickness = 0.0;
   const std::string style = force->pair_style;
   int iarg = 0;
   while (iarg < narg) {
-    if (strcmp(arg[iarg], "legacy") == 0) {
-      legacy = 1;
+    if (strcmp(arg[iarg], "legacy") == 0 || strcmp(arg[iarg], "norecontact") == 0) {
+      if (arg[iarg][0] == 'l') legacy = 1;
+      else recontact = 0;
       iarg++;
       continue;
     }
@@ -139,7 +147,25 @@ void PairPD::coeff(int narg, char **arg)
 // keyword/value pairs from arg[iarg] on, over the given values
 std::vector<double> PairPD::parse_values(int narg, char **arg, int iarg, std::vector<double> values)
 {
+  const std::string style = force->pair_style;
+  while (iarg < narg && strcmp(arg[iarg], "fail") == 0) {
+    // fail stretch <s0> | fail stretch Gc <Gc> | fail energy [Gc <Gc>]
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair {} coeff: 'fail' needs a law: stretch or energy", style);
+    if (strcmp(arg[iarg + 1], "stretch") == 0) values[ifail] = PD_FAIL_STRETCH;
+    else if (strcmp(arg[iarg + 1], "energy") == 0) values[ifail] = PD_FAIL_ENERGY;
+    else error->all(FLERR, "Pair {} coeff: unknown failure law '{}' (stretch, energy)", style, arg[iarg + 1]);
+    iarg += 2;
+    if (iarg + 1 < narg && strcmp(arg[iarg], "Gc") == 0) {
+      values[iGc] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+    } else if (values[ifail] == PD_FAIL_STRETCH) {
+      if (iarg >= narg) error->all(FLERR, "Pair {} coeff: 'fail stretch' needs s0 or 'Gc <Gc>'", style);
+      values[is0] = utils::numeric(FLERR, arg[iarg], false, lmp);
+      iarg++;
+    }
+  }
   for (; iarg < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "fail") == 0) return parse_values(narg, arg, iarg, values);
     const int p = coef_index(arg[iarg]);
     if (p < 0) {
       std::string known;
@@ -231,10 +257,13 @@ pd_elastic PairPD::elastic(int i, int j, const char *who)
 double PairPD::init_one(int i, int j)
 {
   if (setflag[i][j] == 0) {
-    // interface bonds: mean of the two materials (MS07 eq. 30), the larger horizon
+    // interface bonds: mean of the two materials (MS07 eq. 30), the larger
+    // horizon, the smaller critical stretch (MS07 eq. 31)
     for (size_t p = 0; p < names.size(); p++)
       coef[p][i][j] = 0.5 * (coef[p][i][i] + coef[p][j][j]);
     coef[0][i][j] = MAX(coef[0][i][i], coef[0][j][j]);
+    coef[is0][i][j] = MIN(coef[is0][i][i], coef[is0][j][j]);
+    coef[ifail][i][j] = MAX(coef[ifail][i][i], coef[ifail][j][j]);
   }
   for (size_t p = 0; p < names.size(); p++) coef[p][j][i] = coef[p][i][j];
   return horizon(i, j);
@@ -243,6 +272,14 @@ double PairPD::init_one(int i, int j)
 void PairPD::init_style()
 {
   const std::string style = force->pair_style;
+  law = PD_FAIL_NONE;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      const auto l = (pd_fail_law) (int) (setflag[i][j] ? coef[ifail][i][j] : 0);
+      if (l != PD_FAIL_NONE && law != PD_FAIL_NONE && l != law)
+        error->all(FLERR, "Pair {}: one failure law for all type pairs (stretch or energy)", style);
+      if (l != PD_FAIL_NONE) law = l;
+    }
   if (!atom->vfrac_flag || !atom->rmass_flag || !atom->x0)
     error->all(FLERR, "Pair {} requires an atom style with per-atom volume, density and reference "
                       "positions (atom_style peri)", style);
@@ -319,6 +356,78 @@ double PairPD::family_key() const
   uint64_t h = 1469598103934665603ULL;
   for (unsigned char c : s) h = (h ^ c) * 1099511628211ULL;
   return (double) (h >> 12);
+}
+
+// Failure coefficients of one type pair, given E and nu of the material
+// (for the critical stretch from G_c, MS07 eq. 28-29).
+void PairPD::check_failure(int i, int j, double E, double nu)
+{
+  const std::string style = force->pair_style;
+  if (!given(ifail, i, j)) {
+    if (given(is0, i, j) && !std::isinf(value(is0, i, j)))
+      error->all(FLERR, "Pair {} coeff {} {}: s0 needs 'fail stretch'", style, i, j);
+    coef[ifail][i][j] = PD_FAIL_NONE;
+    coef[is0][i][j] = INFINITY;
+    return;
+  }
+  if (given(iGc, i, j) && !(value(iGc, i, j) > 0.0))
+    error->all(FLERR, "Pair {} coeff {} {}: Gc must be positive, got {}", style, i, j, value(iGc, i, j));
+  if (value(ifail, i, j) == PD_FAIL_STRETCH) {
+    if (given(is0, i, j)) {
+      if (!(value(is0, i, j) > 0.0))
+        error->all(FLERR, "Pair {} coeff {} {}: critical stretch s0 must be positive, got {}", style,
+                   i, j, value(is0, i, j));
+    } else if (given(iGc, i, j)) {
+      coef[is0][i][j] = pd_critical_stretch(dim(), model_dim == PD_PLANE_STRAIN, E, nu,
+                                            horizon(i, j), value(iGc, i, j));
+    } else {
+      error->all(FLERR, "Pair {} coeff {} {}: 'fail stretch' needs s0 or 'Gc <Gc>'", style, i, j);
+    }
+  } else {
+    coef[is0][i][j] = INFINITY;
+    if (!given(iGc, i, j))
+      error->all(FLERR, "Pair {} coeff {} {}: 'fail energy' needs 'Gc <Gc>' (here or in the "
+                 "material file)", style, i, j);
+  }
+}
+
+bool PairPD::failing() const
+{
+  return law != PD_FAIL_NONE || bonds->has_broken();
+}
+
+// The failure state for one force evaluation of a failure-aware kernel.
+pd_failure PairPD::failure_state()
+{
+  if (atom->nmax > nreleased) {
+    nreleased = atom->nmax;
+    memory->destroy(released);
+    memory->create(released, nreleased, "pair:released");
+  }
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) released[i] = 0.0;
+  pd_failure f = {};
+  f.law = law;
+  f.recontact = recontact;
+  f.s0 = law == PD_FAIL_STRETCH ? coef[is0][0] : nullptr;
+  f.len0 = bonds->len0_data();
+  f.released_atom = released;
+  return f;
+}
+
+// Book what one evaluation broke: totals on this rank, and the per-atom
+// released energy summed onto owners (only on steps where something broke
+// somewhere, which all ranks learn together).
+void PairPD::account_failure(const pd_failure &f)
+{
+  int mine = f.nbroken > 0, any;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  if (!any) return;
+  bonds->set_has_broken();
+  bonds->add_broken(f.nbroken);
+  bonds->add_dissipated(f.released, f.released_joule);
+  bonds->sum_to_owners(released);
+  for (int i = 0; i < atom->nlocal; i++) bonds->dissipated_atom[i] += released[i];
 }
 
 double PairPD::bond_weight(int itype, int jtype, double r) const
@@ -406,6 +515,7 @@ void PairPD::read_restart(FILE *fp)
 void PairPD::write_restart_settings(FILE *fp)
 {
   const int dimcode = (int) model_dim;
+  fwrite(&recontact, sizeof(int), 1, fp);
   fwrite(&legacy, sizeof(int), 1, fp);
   fwrite(&lattice_spacing, sizeof(double), 1, fp);
   fwrite(&dimcode, sizeof(int), 1, fp);
@@ -415,6 +525,7 @@ void PairPD::write_restart_settings(FILE *fp)
 void PairPD::read_restart_settings(FILE *fp)
 {
   if (comm->me == 0) {
+    utils::sfread(FLERR, &recontact, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &legacy, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &lattice_spacing, sizeof(double), 1, fp, nullptr, error);
   }
@@ -423,6 +534,7 @@ void PairPD::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &dimcode, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &thickness, sizeof(double), 1, fp, nullptr, error);
   }
+  MPI_Bcast(&recontact, 1, MPI_INT, 0, world);
   MPI_Bcast(&legacy, 1, MPI_INT, 0, world);
   MPI_Bcast(&lattice_spacing, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&dimcode, 1, MPI_INT, 0, world);

@@ -14,6 +14,7 @@
 
 extern "C" {
 #include "pd_bonds.h"
+#include "pd_failure.h"
 #include "pd_params.h"
 }
 
@@ -46,6 +47,9 @@ class PairPD : public Pair {
   std::vector<std::string> names;
   double ***coef;           // coef[p][i][j] for names[p]; NaN when not given
   int legacy;               // reproduce legacy PERI (partial volumes, ...)
+  int recontact;            // broken bonds still push in compression (T14 6.1.3)
+  pd_fail_law law;          // the failure law of the style (one for all pairs)
+  int ifail, is0, iGc;      // indices of the failure coefficients
   pd_dimension model_dim;   // 3D, plane stress or plane strain
   double thickness;         // plate thickness of a 2D model
   double lattice_spacing;   // legacy partial volumes need it (0: not yet known)
@@ -79,6 +83,12 @@ class PairPD : public Pair {
   void tally(const pd_tally &t);
   void report_setup();
   double family_key() const;
+  void check_failure(int i, int j, double E, double nu);    // s0 from Gc, validation
+  bool failing() const;
+  pd_failure failure_state();
+  void account_failure(const pd_failure &f);
+  double *released;         // per-atom released energy of one step (owned + ghost)
+  int nreleased;
 };
 
 }    // namespace LAMMPS_NS

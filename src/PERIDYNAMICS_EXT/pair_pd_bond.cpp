@@ -15,6 +15,7 @@
 
 extern "C" {
 #include "pd_bond_based.h"
+#include "pd_params.h"
 #include "pd_timestep.h"
 }
 
@@ -62,6 +63,16 @@ void PairPDBond::check_coeff(int i, int j)
   if (p == BULK) coef[MICROMODULUS][i][j] = pd_pmb_micromodulus_3d(value(BULK, i, j), delta);
   if (p == YOUNG) coef[MICROMODULUS][i][j] = pd_pmb_micromodulus(model_dim, E, delta, thickness);
 
+  // E of the bond-based solid, for the critical stretch from G_c
+  const double Eb = value(MICROMODULUS, i, j) / pd_pmb_micromodulus(model_dim, 1.0, delta, thickness);
+  if (given(ifail, i, j) && value(ifail, i, j) == PD_FAIL_ENERGY)
+    error->all(FLERR, "Pair pd/bond coeff {} {}: 'fail energy' needs a state-based material "
+               "(pd/ordinary); bond-based bonds fail by 'fail stretch'", i, j);
+  if (given(ifail, i, j) && model == MICROPLASTIC)
+    error->all(FLERR, "Pair pd/bond coeff {} {}: failure of microplastic bonds is not supported "
+               "(its G_c calibration needs the plastic work, MS07 after eq. 29)", i, j);
+  check_failure(i, j, Eb, nu_pmb);
+
   if (model == MICROPLASTIC) {
     if (!given(YIELD, i, j) || !(value(YIELD, i, j) > 0.0))
       error->all(FLERR, "Pair pd/bond coeff {} {}: microplastic needs a positive yield_stretch "
@@ -89,6 +100,10 @@ void PairPDBond::compute(int eflag, int vflag)
     pd_microplastic mp = {coef[YIELD][0], bonds->history_data(), 0.0};
     pd_microplastic_forces(&v, &mat, &mp, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
     bonds->add_dissipated(mp.dissipated);
+  } else if (failing()) {
+    pd_failure fail = failure_state();
+    pd_pmb_forces(&v, &mat, &fail, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
+    account_failure(fail);
   } else {
     pd_pmb_forces(&v, &mat, nullptr, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
   }

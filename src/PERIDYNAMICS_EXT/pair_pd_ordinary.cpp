@@ -15,6 +15,7 @@
 #include "fix_pd_bonds.h"
 #include "force.h"
 #include "memory.h"
+#include "neighbor.h"
 
 #include <cmath>
 #include <cstring>
@@ -34,7 +35,8 @@ enum { HORIZON, BULK, SHEAR, YOUNG, POISSON, ORDER };
 PairPDOrdinary::PairPDOrdinary(LAMMPS *lmp) :
     PairPD(lmp, {"horizon", "K", "G", "E", "nu", "m"}), influence(-1),
     per_atom_norm(0), order(0.5), bulk_volume(nullptr), lambda_bar(nullptr), mu_bar(nullptr),
-    theta(nullptr), abstate(nullptr), nmax(0), strain(nullptr), nstrain(0)
+    theta(nullptr), abstate(nullptr), nmax(0), strain(nullptr), nstrain(0), beta(nullptr),
+    crit(nullptr)
 {
 }
 
@@ -46,6 +48,8 @@ PairPDOrdinary::~PairPDOrdinary()
   memory->destroy(lambda_bar);
   memory->destroy(mu_bar);
   memory->destroy(strain);
+  memory->destroy(beta);
+  memory->destroy(crit);
 }
 
 void PairPDOrdinary::settings(int narg, char **arg)
@@ -84,7 +88,13 @@ void PairPDOrdinary::check_coeff(int i, int j)
 {
   if (!given(HORIZON, i, j) || value(HORIZON, i, j) <= 0.0)
     error->all(FLERR, "Pair pd/ordinary coeff {} {}: horizon missing or not positive", i, j);
-  if (i != j) return;
+  if (i != j) {
+    // interface bonds: their failure (critical stretch) may be given here
+    if (given(ifail, i, j) && value(ifail, i, j) == PD_FAIL_STRETCH && !given(is0, i, j))
+      error->all(FLERR, "Pair pd/ordinary coeff {} {}: an interface takes 'fail stretch <s0>'", i, j);
+    check_failure(i, j, NAN, NAN);
+    return;
+  }
   for (int p : {BULK, SHEAR, YOUNG})
     if (given(p, i, j) && !(value(p, i, j) > 0.0))
       error->all(FLERR, "Pair pd/ordinary coeff {} {}: {} must be positive, got {}", i, j, names[p],
@@ -94,6 +104,7 @@ void PairPDOrdinary::check_coeff(int i, int j)
   coef[SHEAR][i][j] = m.G;
   coef[YOUNG][i][j] = m.E;
   coef[POISSON][i][j] = m.nu;
+  check_failure(i, j, m.E, m.nu);
   if (!given(ORDER, i, j)) coef[ORDER][i][j] = 0.5;
   if (!(value(ORDER, i, j) <= 1.0 && value(ORDER, i, j) >= -4.0))
     error->all(FLERR, "Pair pd/ordinary coeff {} {}: strain order m = {} is outside [-4, 1]", i, j,
@@ -151,6 +162,21 @@ void PairPDOrdinary::setup_run()
   for (int i = 0; i < atom->nlocal; i++)
     mine[atom->type[i]] = MAX(mine[atom->type[i]], bonds->weighted_volume[i]);
   MPI_Allreduce(mine.data(), bulk_volume, ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+  memory->destroy(beta);
+  memory->create(beta, ntypes + 1, "pair:beta");
+  for (int t = 1; t <= ntypes; t++) {
+    beta[t] = 0.0;
+    if (law == PD_FAIL_ENERGY && coef[ifail][t][t] == PD_FAIL_ENERGY) {
+      beta[t] = pd_energy_failure_beta((pd_influence_kind) influence, dim(), coef[HORIZON][t][t],
+                                       coef[iGc][t][t]);
+      if (beta[t] < 0.0)
+        error->all(FLERR, "Pair pd/ordinary: 'fail energy' with influence {} in 2D: the G_c "
+                   "integral diverges (T14 eq. 6.2); use influence constant or tupek",
+                   pd_influence_name((pd_influence_kind) influence));
+    } else if (law == PD_FAIL_ENERGY) {
+      beta[t] = INFINITY;    // this type's bonds do not fail
+    }
+  }
   for (int t = 1; t <= ntypes; t++) {
     pd_elastic m;
     pd_elastic_from_K_G(coef[BULK][t][t], coef[SHEAR][t][t], &m);
@@ -166,8 +192,10 @@ void PairPDOrdinary::grow_state()
     nmax = atom->nmax;
     memory->destroy(theta);
     memory->destroy(abstate);
+    memory->destroy(crit);
     memory->create(theta, nmax, "pair:theta");
     memory->create(abstate, 2 * nmax, "pair:abstate");
+    memory->create(crit, nmax, "pair:crit");
   }
 }
 
@@ -188,8 +216,11 @@ void PairPDOrdinary::compute(int eflag, int vflag)
     memory->destroy(strain);
     memory->create(strain, nstrain, "pair:strain");
   }
-  pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr, atom->ntypes + 1, nullptr};
-  pd_ordinary_dilatation(&v, &st, nullptr, atom->x[0], atom->vfrac);
+  pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr, atom->ntypes + 1, crit};
+  const bool fails = failing();
+  pd_failure fail = fails ? failure_state() : pd_failure{};
+  pd_failure *fp = fails ? &fail : nullptr;
+  pd_ordinary_dilatation(&v, &st, fp, atom->x[0], atom->vfrac);
   bonds->sum_to_owners(sum);
 
   pd_tally t = {};
@@ -206,7 +237,13 @@ void PairPDOrdinary::compute(int eflag, int vflag)
     }
   }
   bonds->copy_to_ghosts(abstate, 2);
-  pd_ordinary_forces(&v, &st, nullptr, atom->type, atom->x[0], atom->vfrac, atom->f[0], evflag ? &t : nullptr);
+  if (law == PD_FAIL_ENERGY) {
+    // beta N is fixed per atom: ghosts need it again only after reneighboring
+    for (int i = 0; i < nlocal; i++) crit[i] = beta[type[i]] * norm(i);
+    if (neighbor->ago == 0) bonds->copy_to_ghosts(crit);
+  }
+  pd_ordinary_forces(&v, &st, fp, atom->type, atom->x[0], atom->vfrac, atom->f[0], evflag ? &t : nullptr);
+  if (fails) account_failure(fail);
   if (evflag) tally(t);
 }
 

@@ -39,6 +39,8 @@ class PairPDOrdinary : public PairPD {
   int nmax;
   double *strain;      // per-bond strain, reused by the force pass (m != 1/2)
   bigint nstrain;
+  double *beta;        // per type: energy-failure beta (T14 eq. 6.3), 0 without
+  double *crit;        // per atom beta N (energy law; owned + ghost)
 
   int parse_setting(int, char **, int) override;
   void check_coeff(int, int) override;
