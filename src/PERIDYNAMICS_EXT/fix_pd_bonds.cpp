@@ -2,7 +2,7 @@
    PERIDYNAMICS_EXT: bond families of the pd/ pair styles.
 
    Families are built once, from the reference positions x0, on the first
-   run. Each bond is stored at the end with the smaller tag and visited once.
+   run. Each bond is stored at one end (owns_bond) and visited once.
    Partners are kept as tags (for migration and restart) and turned into
    local indices after every reneighboring, never per bond per step.
 ------------------------------------------------------------------------- */
@@ -61,6 +61,8 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
   create_attribute = 1;
   comm_forward = 2;
   comm_reverse = 2;
+  maxexchange_dynamic = 1;    // the exchange size follows the longest family
+  maxexchange = per_atom_max();
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -104,7 +106,7 @@ void FixPDBonds::setup_post_neighbor()
 {
   if (!built) build_families();
   else {
-    map_partners();
+    map_partners(true);
     check_identities();
   }
 }
@@ -138,7 +140,7 @@ void FixPDBonds::check_identities()
 
 void FixPDBonds::post_neighbor()
 {
-  map_partners();
+  map_partners(false);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -172,6 +174,7 @@ void FixPDBonds::build_families()
   }
   MPI_Allreduce(&mymax, &maxpartner, 1, MPI_INT, MPI_MAX, world);
   maxpartner = MAX(maxpartner, 1);
+  maxexchange = per_atom_max();
   memory->destroy(partner);
   memory->destroy(r0);
   memory->destroy(weight);
@@ -196,8 +199,16 @@ void FixPDBonds::build_families()
       for (int h = 0; h < nhistory; h++) history[i][k * nhistory + h] = 0.0;
     }
   }
+  int coincident = 0, any_coincident;
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < npartner[i]; k++)
+      if (r0[i][k] <= 1e-12 * owner->horizon(type[i], type[i])) coincident = 1;
+  MPI_Allreduce(&coincident, &any_coincident, 1, MPI_INT, MPI_MAX, world);
+  if (any_coincident)
+    error->all(FLERR, "Fix pd/bonds: two atoms share a reference position (x0); peridynamic "
+               "bonds need distinct positions");
   built = 1;
-  map_partners();
+  map_partners(true);
   reference_sums();
 
   bigint nbonds = 0, mybonds = 0;
@@ -216,15 +227,17 @@ void FixPDBonds::build_families()
 // the next reneighboring (atoms move less than half the skin meanwhile).
 // A partner beyond the ghost cutoff is lost even when this rank happens to
 // own it, so that the same bonds are lost on any number of ranks.
-void FixPDBonds::map_partners()
+void FixPDBonds::map_partners(bool setup)
 {
   nowned = atom->nlocal;
   const double cut = comm->get_comm_cutoff(), cutsq = cut * cut;
+  const int nall = atom->nlocal + atom->nghost;
   double **x = atom->x;
   const bigint lost_before = nlost_local;
   for (int i = 0; i < nowned; i++)
     for (int k = 0; k < npartner[i]; k++) {
       int j = atom->map(partner[i][k]);
+      if (j >= nall) j = -1;    // a stale map entry of a deleted atom
       if (j >= 0) j = domain->closest_image(i, j);
       if (j >= 0) {
         const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
@@ -240,7 +253,7 @@ void FixPDBonds::map_partners()
   // minimize's line search moves atoms by up to 'min_modify dmax' (0.1
   // length units by default: 10 cm in SI), which tears bonds that physics
   // would keep; every rank is here at once, so the check is collective
-  if (update->whichflag == 2) {
+  if (update->whichflag == 2 && !setup) {
     const int mine = nlost_local > lost_before;
     int any;
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
@@ -460,6 +473,7 @@ void FixPDBonds::restart(char *buf)
                "now needs {}", (int) list[4], nhistory);
   built = (int) list[0];
   maxpartner = (int) list[1];
+  maxexchange = per_atom_max();
   // totals are kept once, on rank 0, so the global sums carry over
   nlost_local = comm->me == 0 ? (bigint) list[3] : 0;
   dissipated = comm->me == 0 ? list[5] : 0.0;
@@ -494,7 +508,12 @@ int FixPDBonds::size_restart(int i)
   return per_atom_doubles(i) + 1;
 }
 
+int FixPDBonds::per_atom_max() const
+{
+  return PER_ATOM_FIXED + maxpartner * (2 + use_weights + nhistory);
+}
+
 int FixPDBonds::maxsize_restart()
 {
-  return PER_ATOM_FIXED + maxpartner * (2 + use_weights + nhistory) + 1;
+  return per_atom_max() + 1;
 }

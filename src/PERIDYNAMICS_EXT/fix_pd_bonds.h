@@ -30,7 +30,7 @@ class FixPDBonds : public Fix {
   void init_list(int, class NeighList *) override;
   void setup_post_neighbor() override;
   void post_neighbor() override;
-  void min_post_neighbor() override { post_neighbor(); }
+  void min_post_neighbor() override { map_partners(false); }
   double compute_scalar() override;
   double memory_usage() override;
 
@@ -51,6 +51,7 @@ class FixPDBonds : public Fix {
   void unpack_reverse_comm(int, int *, double *) override;
 
   void set_owner(PairPD *pair) { owner = pair; }
+  PairPD *get_owner() const { return owner; }
   // what the families were built for (pair style, horizons, weights ...)
   double built_for() const { return family_key; }
   void set_family_key(double key) { if (!built) family_key = key; }
@@ -112,11 +113,12 @@ class FixPDBonds : public Fix {
   int comm_width;
 
   void build_families();
-  void map_partners();
+  void map_partners(bool setup);
   void check_identities();
   void reference_sums();
   void remove_bond(int i, int k);
   int per_atom_doubles(int i) const;
+  int per_atom_max() const;
 };
 
 }    // namespace LAMMPS_NS

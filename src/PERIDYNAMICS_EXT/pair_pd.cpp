@@ -272,6 +272,11 @@ double PairPD::init_one(int i, int j)
 void PairPD::init_style()
 {
   const std::string style = force->pair_style;
+  // interface pairs not given explicitly are mixed now (LAMMPS mixes them
+  // after init_style), so that the horizons and the bond fingerprint below
+  // are complete; init_one is idempotent
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) init_one(i, j);
   law = PD_FAIL_NONE;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
@@ -336,6 +341,10 @@ void PairPD::init_style()
   }
   bonds = dynamic_cast<FixPDBonds *>(modify->fix[ifix]);
   if (!bonds) error->all(FLERR, "Fix ID {} is taken by a fix that is not pd/bonds", FIX_ID);
+  // two pd/ material sub-styles of a hybrid would share one bond store
+  if (utils::strmatch(force->pair_style, "^hybrid") && force->pair_match("^pd/", 0, 2))
+    error->all(FLERR, "Pair {}: one pd/ material style per simulation (they would share the "
+               "bond families); use one style with several atom types", style);
   bonds->set_owner(this);
   bonds->set_family_key(family_key());
   if (bonds->is_built() && bonds->built_for() != family_key())
@@ -448,6 +457,9 @@ void PairPD::grow_work()
 
 void PairPD::tally(const pd_tally &t)
 {
+  if (vflag_atom)
+    error->all(FLERR, "Pair {} computes no per-atom virial (compute stress/atom); use the global "
+               "pressure", force->pair_style);
   if (eflag_global) eng_vdwl += t.energy;
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += t.virial[k];

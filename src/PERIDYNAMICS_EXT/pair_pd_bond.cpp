@@ -24,12 +24,24 @@ using namespace LAMMPS_NS;
 enum { HORIZON, MICROMODULUS, BULK, YOUNG, POISSON, YIELD };
 enum { PMB, MICROPLASTIC };
 
+PairPDBond::~PairPDBond()
+{
+  delete[] pvector;
+}
+
 PairPDBond::PairPDBond(LAMMPS *lmp) :
     PairPD(lmp, {"horizon", "c", "K", "E", "nu", "yield_stretch"}), model(PMB), plastic(0)
 {
   // compute pair pd/bond reports the dissipated (plastic) work as its first extra value
   nextra = 1;
   pvector = new double[nextra];
+}
+
+// the model word applies to its own pair_coeff line only
+void PairPDBond::coeff(int narg, char **arg)
+{
+  model = PMB;
+  PairPD::coeff(narg, arg);
 }
 
 int PairPDBond::parse_model(const char *word)
@@ -97,6 +109,9 @@ void PairPDBond::compute(int eflag, int vflag)
   t.eatom = eflag_atom ? eatom : nullptr;
   pd_tally *tp = evflag ? &t : nullptr;
   if (plastic) {
+    if (bonds->has_broken())
+      error->all(FLERR, "Pair pd/bond: microplastic bonds cannot be broken (pre-cracks are not "
+                 "supported with them)");
     pd_microplastic mp = {coef[YIELD][0], bonds->history_data(), 0.0};
     pd_microplastic_forces(&v, &mat, &mp, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
     bonds->add_dissipated(mp.dissipated);

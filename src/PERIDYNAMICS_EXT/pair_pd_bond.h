@@ -19,7 +19,9 @@ namespace LAMMPS_NS {
 class PairPDBond : public PairPD {
  public:
   PairPDBond(class LAMMPS *);
+  ~PairPDBond() override;
   void compute(int, int) override;
+  void coeff(int, char **) override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
 

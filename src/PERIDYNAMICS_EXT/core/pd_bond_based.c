@@ -52,26 +52,11 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
       }
       double t = c * s;
       if (weighted) t *= b->weight[row + k];
-      const double tl = len > 0.0 ? t / len : 0.0;
       const double vj = vol[j];
-      fxi += vj * tl * dx;
-      fyi += vj * tl * dy;
-      fzi += vj * tl * dz;
-      f[3 * j] -= vi * tl * dx;
-      f[3 * j + 1] -= vi * tl * dy;
-      f[3 * j + 2] -= vi * tl * dz;
       const double w = 0.25 * t * s * r0; /* energy density per partner volume */
-      if (tallied) {
-        tally->energy += w * (vj + vi);
-        if (tally->eatom) {
-          tally->eatom[i] += w * vj;
-          tally->eatom[j] += w * vi;
-        }
-        const double d[3] = {-dx, -dy, -dz};
-        pd_tally_virial(tally, d, -tl * vi * vj);
-      }
-      /* critical stretch: the bond breaks after this step's force, releasing
-       * the energy it stores now */
+      /* critical stretch: the bond breaks now, before its force acts,
+       * releasing the energy it stores in this configuration (so kinetic +
+       * elastic + released stays consistent at this step) */
       if (failing && !broken && s0i && s > s0i[type[j]]) {
         fail->len0[row + k] = -r0;
         nbroken++;
@@ -81,6 +66,23 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
           fail->released_atom[i] += w * vj;
           fail->released_atom[j] += w * vi;
         }
+        continue;
+      }
+      const double tl = len > 0.0 ? t / len : 0.0;
+      fxi += vj * tl * dx;
+      fyi += vj * tl * dy;
+      fzi += vj * tl * dz;
+      f[3 * j] -= vi * tl * dx;
+      f[3 * j + 1] -= vi * tl * dy;
+      f[3 * j + 2] -= vi * tl * dz;
+      if (tallied) {
+        tally->energy += w * (vj + vi);
+        if (tally->eatom) {
+          tally->eatom[i] += w * vj;
+          tally->eatom[j] += w * vi;
+        }
+        const double d[3] = {-dx, -dy, -dz};
+        pd_tally_virial(tally, d, -tl * vi * vj);
       }
     }
     f[3 * i] += fxi;

@@ -130,26 +130,11 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failu
       const double eps = cached ? st->strain[row + k] : bond_strain(kind, m, len, r0);
       if (failing && inactive(fail, broken, eps)) continue;
       const double aj = ab[2 * j], bj = ab[2 * j + 1];
-      const double t = (ai + aj + (bi + bj) * eps) * w * bond_strain_rate(kind, m, eps, len, r0);
-      const double tl = len > 0.0 ? t / len : 0.0;
       const double vj = vol[j];
-      for (int c = 0; c < 3; c++) {
-        fi[c] += vj * tl * d[c];
-        f[3 * j + c] -= vi * tl * d[c];
-      }
-      if (tallied) {
-        const double we2 = 0.5 * w * eps * eps;
-        tally->energy += we2 * (bi * vj + bj * vi);
-        if (tally->eatom) {
-          tally->eatom[i] += we2 * bi * vj;
-          tally->eatom[j] += we2 * bj * vi;
-        }
-        const double dij[3] = {-d[0], -d[1], -d[2]};
-        pd_tally_virial(tally, dij, -tl * vi * vj);
-      }
-      if (failing && !broken && eps > 0.0) {
+      if (failing && fail->law != PD_FAIL_NONE && !broken && eps > 0.0) {
         /* instantaneous bond energy at each end, per partner volume (T14
-         * eq. 6.5): s = w eps (A + B eps / 2) */
+         * eq. 6.5): s = w eps (A + B eps / 2). A bond that fails breaks now,
+         * before its force acts, releasing that energy. */
         const double si = w * eps * (ai + 0.5 * bi * eps), sj = w * eps * (aj + 0.5 * bj * eps);
         const int breaks = fail->law == PD_FAIL_STRETCH
             ? len / r0 - 1.0 > s0i[type[j]]
@@ -163,7 +148,24 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failu
             fail->released_atom[i] += si * vj;
             fail->released_atom[j] += sj * vi;
           }
+          continue;
         }
+      }
+      const double t = (ai + aj + (bi + bj) * eps) * w * bond_strain_rate(kind, m, eps, len, r0);
+      const double tl = len > 0.0 ? t / len : 0.0;
+      for (int c = 0; c < 3; c++) {
+        fi[c] += vj * tl * d[c];
+        f[3 * j + c] -= vi * tl * d[c];
+      }
+      if (tallied) {
+        const double we2 = 0.5 * w * eps * eps;
+        tally->energy += we2 * (bi * vj + bj * vi);
+        if (tally->eatom) {
+          tally->eatom[i] += we2 * bi * vj;
+          tally->eatom[j] += we2 * bj * vi;
+        }
+        const double dij[3] = {-d[0], -d[1], -d[2]};
+        pd_tally_virial(tally, dij, -tl * vi * vj);
       }
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
