@@ -164,15 +164,29 @@ void PairPDOrdinary::setup_run()
   MPI_Allreduce(mine.data(), bulk_volume, ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
   memory->destroy(beta);
   memory->create(beta, ntypes + 1, "pair:beta");
+  std::vector<double> moment(ntypes + 1, 0.0);
+  if (law == PD_FAIL_ENERGY) {
+    // the complete family's moment sum w V / |xi|, the largest of the type
+    grow_work();
+    const int nall = atom->nlocal + atom->nghost;
+    for (int i = 0; i < nall; i++) work[i] = 0.0;
+    const pd_bond_view v = bonds->view();
+    pd_failure_moment(&v, atom->vfrac, work);
+    bonds->sum_to_owners(work);
+    std::vector<double> mine(ntypes + 1, 0.0);
+    for (int i = 0; i < atom->nlocal; i++) mine[atom->type[i]] = MAX(mine[atom->type[i]], work[i]);
+    MPI_Allreduce(mine.data(), moment.data(), ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+  }
   for (int t = 1; t <= ntypes; t++) {
     beta[t] = 0.0;
     if (law == PD_FAIL_ENERGY && coef[ifail][t][t] == PD_FAIL_ENERGY) {
-      beta[t] = pd_energy_failure_beta((pd_influence_kind) influence, dim(), coef[HORIZON][t][t],
-                                       coef[iGc][t][t]);
-      if (beta[t] < 0.0)
+      // the continuum integral must exist (T14 eq. 6.1-6.2) ...
+      if (pd_energy_failure_beta((pd_influence_kind) influence, dim(), coef[HORIZON][t][t], 1.0) < 0.0)
         error->all(FLERR, "Pair pd/ordinary: 'fail energy' with influence {} in 2D: the G_c "
                    "integral diverges (T14 eq. 6.2); use influence constant or tupek",
                    pd_influence_name((pd_influence_kind) influence));
+      // ... and beta is calibrated on the lattice itself
+      beta[t] = pd_energy_failure_beta_lattice(dim(), coef[iGc][t][t], bulk_volume[t], moment[t]);
     } else if (law == PD_FAIL_ENERGY) {
       beta[t] = INFINITY;    // this type's bonds do not fail
     }
@@ -266,6 +280,12 @@ void PairPDOrdinary::report_extra()
   std::string lame;
   for (int t = 1; t <= atom->ntypes; t++)
     lame += fmt::format(" type {}: lambda_bar {:.4g} mu_bar {:.4g};", t, lambda_bar[t], mu_bar[t]);
+  if (law == PD_FAIL_ENERGY)
+    for (int t = 1; t <= atom->ntypes; t++)
+      if (std::isfinite(beta[t]) && beta[t] > 0.0)
+        lame += fmt::format(" energy failure beta {:.4g} (continuum {:.4g});", beta[t],
+                            pd_energy_failure_beta((pd_influence_kind) influence, dim(),
+                                                   coef[HORIZON][t][t], coef[iGc][t][t]));
   utils::logmesg(lmp, "pd/ordinary: strain order m = {}, influence {}, {};{}\n", order,
                  pd_influence_name((pd_influence_kind) influence),
                  per_atom_norm ? "normalized per atom (surface correction)"

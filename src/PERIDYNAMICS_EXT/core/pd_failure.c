@@ -23,6 +23,25 @@ double pd_energy_failure_beta(pd_influence_kind kind, int dim, double delta, dou
   return Gc / (2.0 * integral);
 }
 
+double pd_energy_failure_beta_lattice(int dim, double Gc, double weighted_volume, double moment)
+{
+  const double mean_cos = dim == 3 ? 0.25 : 1.0 / M_PI;
+  return Gc * weighted_volume / (2.0 * dim * mean_cos * moment);
+}
+
+void pd_failure_moment(const pd_bond_view *b, const double *vol, double *moment)
+{
+  for (int i = 0; i < b->nowner; i++) {
+    const int row = i * b->stride;
+    for (int k = 0; k < b->count[i]; k++) {
+      const int j = b->far[row + k];
+      const double w = (b->weight ? b->weight[row + k] : 1.0) / fabs(b->len0[row + k]);
+      moment[i] += w * vol[j];
+      moment[j] += w * vol[i];
+    }
+  }
+}
+
 double pd_critical_stretch(int dim, int plane_strain, double E, double nu, double delta, double Gc)
 {
   if (dim == 3) {
