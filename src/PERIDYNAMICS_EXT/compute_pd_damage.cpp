@@ -1,6 +1,10 @@
 /* ----------------------------------------------------------------------
-   PERIDYNAMICS_EXT: compute pd/damage (MS07 eq. 25):
-   phi = 1 - (volume of intact partners) / (volume of the reference family).
+   PERIDYNAMICS_EXT: compute pd/damage [weighted]
+   default (MS07 eq. 25): phi = 1 - (volume of intact partners) / (volume of
+   the reference family);
+   weighted (T14 eq. 6.12): D = 1 - (1/d) sum omega phi V with the atom's own
+   normalization: 1 - (weighted volume of intact partners) / (reference
+   weighted volume).
 ------------------------------------------------------------------------- */
 
 #include "compute_pd_damage.h"
@@ -12,12 +16,16 @@
 #include "pd_modify_lookup.h"
 #include "update.h"
 
+#include <cstring>
+
 using namespace LAMMPS_NS;
 
 ComputePDDamage::ComputePDDamage(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), nmax(0), damage(nullptr), bonds(nullptr)
+    Compute(lmp, narg, arg), nmax(0), damage(nullptr), bonds(nullptr), weighted(0)
 {
-  if (narg != 3) error->all(FLERR, "Illegal compute pd/damage command: it takes no arguments");
+  if (narg == 4 && strcmp(arg[3], "weighted") == 0) weighted = 1;
+  else if (narg != 3)
+    error->all(FLERR, "Illegal compute pd/damage command: expected no argument or 'weighted'");
   peratom_flag = 1;
   size_peratom_cols = 0;
 }
@@ -45,11 +53,12 @@ void ComputePDDamage::compute_peratom()
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) damage[i] = 0.0;
   pd_bond_view v = bonds->view();
-  v.weight = nullptr;
-  pd_intact_volume(&v, atom->vfrac, damage);    // intact family volume
+  if (!weighted) v.weight = nullptr;
+  pd_intact_volume(&v, atom->vfrac, damage);    // intact family (weighted) volume
   bonds->sum_to_owners(damage);
+  const double *reference = weighted ? bonds->weighted_volume : bonds->family_volume;
   for (int i = 0; i < atom->nlocal; i++) {
-    const double all = bonds->family_volume[i];
+    const double all = reference[i];
     damage[i] = (all > 0.0 && (atom->mask[i] & groupbit)) ? 1.0 - damage[i] / all : 0.0;
   }
 }

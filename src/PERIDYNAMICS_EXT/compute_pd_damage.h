@@ -27,6 +27,7 @@ class ComputePDDamage : public Compute {
   int nmax;
   double *damage;
   class FixPDBonds *bonds;
+  int weighted;    // T14 eq. 6.12 instead of MS07 eq. 25
 };
 
 }    // namespace LAMMPS_NS
