@@ -12,4 +12,4 @@ echo "== impact demo (examples/impact-demo) =="
 grep -E "^pd/|^pd/bonds" log.lammps | sed 's/^/  /'
 grep -E "^Loop time" log.lammps | head -1 | sed 's/^/  /'
 grep -E "^DEMO" log.lammps | sed 's/^DEMO /  /'
-echo "  pictures: $out/impact.0.png (start), $out/impact.800.png (end)   log: $out/log.lammps"
+echo "  pictures: $out/impact.0.png (start), $out/impact.400.png (middle), $out/impact.800.png (end)   log: $out/log.lammps"
