@@ -39,7 +39,7 @@ static inline bool owns_bond(tagint me, tagint other)
 FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), dissipated_atom(nullptr), owner(nullptr), built_tag(nullptr),
     use_weights(0), nhistory(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
-    r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), dissipated(0.0), dissipated_joule(0.0), nbroken_local(0), any_broken(0),
+    r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), nlost_reported(0), dissipated(0.0), dissipated_joule(0.0), nbroken_local(0), any_broken(0),
     family_key(0.0), list(nullptr),
     comm_array(nullptr), comm_width(1)
 {
@@ -88,7 +88,18 @@ FixPDBonds::~FixPDBonds()
 
 int FixPDBonds::setmask()
 {
-  return POST_NEIGHBOR | MIN_POST_NEIGHBOR;
+  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | POST_RUN;
+}
+
+// Lost partners are counted all along; say so once per run when there are new ones.
+void FixPDBonds::post_run()
+{
+  const bigint total = (bigint) compute_scalar();
+  if (total > nlost_reported && comm->me == 0)
+    error->warning(FLERR, "Fix pd/bonds: {} bond partners lost so far (moved beyond the ghost "
+                   "cutoff, horizon + skin); f_{} counts them; 'comm_modify cutoff' reaches further",
+                   total, id);
+  nlost_reported = total;
 }
 
 void FixPDBonds::init()

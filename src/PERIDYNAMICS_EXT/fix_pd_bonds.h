@@ -31,6 +31,7 @@ class FixPDBonds : public Fix {
   void setup_post_neighbor() override;
   void post_neighbor() override;
   void min_post_neighbor() override { map_partners(false); }
+  void post_run() override;
   double compute_scalar() override;
   double memory_usage() override;
 
@@ -103,6 +104,7 @@ class FixPDBonds : public Fix {
   double **history;        // per-bond history (nhistory > 0 only)
   int **far;               // far end as a local index (owned+ghost)
   bigint nlost_local;      // bonds dropped because the partner was lost
+  bigint nlost_reported;   // the global count last warned about
   double dissipated;       // this rank's share of the dissipated energy
   double dissipated_joule; // the same in joules
   bigint nbroken_local;    // bonds broken on this rank (fracture, not pre-cracks)

@@ -272,6 +272,11 @@ double PairPD::init_one(int i, int j)
 void PairPD::init_style()
 {
   const std::string style = force->pair_style;
+  // minimize's line search evaluates trial states it may reject: bonds must
+  // not break or yield there
+  if (update->whichflag == 2 && (law != PD_FAIL_NONE || history_per_bond()))
+    error->all(FLERR, "Pair {}: minimize with bond failure or plasticity is not supported (line "
+               "search trial states would break or yield bonds); use damped dynamics", style);
   // interface pairs not given explicitly are mixed now (LAMMPS mixes them
   // after init_style), so that the horizons and the bond fingerprint below
   // are complete; init_one is idempotent
