@@ -63,7 +63,7 @@ cases = [
     ("energy law with a divergent G_c integral", PLATE + f"pair_style pd/ordinary plane stress thickness 1e-3 influence inverse\n"
      f"pair_coeff * * E 1e9 nu 0.3 horizon {H} fail energy Gc 10\nset group all volume 2.5e-10\n" + RUN,
      "the G_c integral diverges"),
-    ("minimize with bond failure", block(6) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.3 horizon {H} fail stretch 0.01\n"
+    ("minimize with bond failure", block(8) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.3 horizon {H} fail stretch 0.01\n"
      "min_modify dmax 1e-6\nminimize 1e-10 0 10 100\n", "minimize with bond failure or plasticity is not supported"),
     ("unknown failure law", block(6) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.3 horizon {H} fail bending 3\n",
      "unknown failure law 'bending'"),
