@@ -272,11 +272,6 @@ double PairPD::init_one(int i, int j)
 void PairPD::init_style()
 {
   const std::string style = force->pair_style;
-  // minimize's line search evaluates trial states it may reject: bonds must
-  // not break or yield there
-  if (update->whichflag == 2 && (law != PD_FAIL_NONE || history_per_bond()))
-    error->all(FLERR, "Pair {}: minimize with bond failure or plasticity is not supported (line "
-               "search trial states would break or yield bonds); use damped dynamics", style);
   // interface pairs not given explicitly are mixed now (LAMMPS mixes them
   // after init_style), so that the horizons and the bond fingerprint below
   // are complete; init_one is idempotent
@@ -290,6 +285,11 @@ void PairPD::init_style()
         error->all(FLERR, "Pair {}: one failure law for all type pairs (stretch or energy)", style);
       if (l != PD_FAIL_NONE) law = l;
     }
+  // minimize's line search evaluates trial states it may reject: bonds must
+  // not break or yield there
+  if (update->whichflag == 2 && (law != PD_FAIL_NONE || history_per_bond()))
+    error->all(FLERR, "Pair {}: minimize with bond failure or plasticity is not supported (line "
+               "search trial states would break or yield bonds); use damped dynamics", style);
   if (!atom->vfrac_flag || !atom->rmass_flag || !atom->x0)
     error->all(FLERR, "Pair {} requires an atom style with per-atom volume, density and reference "
                       "positions (atom_style peri)", style);
