@@ -347,7 +347,14 @@ void PairPD::init_style()
   bonds = dynamic_cast<FixPDBonds *>(modify->fix[ifix]);
   if (!bonds) error->all(FLERR, "Fix ID {} is taken by a fix that is not pd/bonds", FIX_ID);
   // two pd/ material sub-styles of a hybrid would share one bond store
-  if (utils::strmatch(force->pair_style, "^hybrid") && force->pair_match("^pd/", 0, 2))
+  // (pair_match's nsub = 2 gives the second instance, or the only one)
+  auto twice = [&](const char *s) {
+    Pair *second = force->pair_match(s, 1, 2);
+    return second && second != force->pair_match(s, 1, 1);
+  };
+  const bool two = twice("pd/bond") || twice("pd/ordinary") ||
+      (force->pair_match("pd/bond", 1, 1) && force->pair_match("pd/ordinary", 1, 1));
+  if (utils::strmatch(force->pair_style, "^hybrid") && two)
     error->all(FLERR, "Pair {}: one pd/ material style per simulation (they would share the "
                "bond families); use one style with several atom types", style);
   bonds->set_owner(this);

@@ -42,6 +42,10 @@ class PairPD : public Pair {
   // quadrature weight of a new bond (used only when uses_weights())
   virtual double bond_weight(int itype, int jtype, double r) const;
   FixPDBonds *bond_store() const { return bonds; }
+  double plate_thickness() const { return thickness; }
+  // micromodulus of a bond-based solid as stiff as this material: the scale
+  // of the contact stiffness (pd/contact)
+  virtual double contact_micromodulus(int itype, int jtype) const = 0;
 
  protected:
   std::vector<std::string> names;

@@ -317,3 +317,10 @@ void *PairPDOrdinary::extract(const char *name, int &dim)
   if (strcmp(name, "theta") == 0) return (void *) theta;
   return nullptr;
 }
+
+// The PMB micromodulus of the same Young's modulus (the contact scale).
+double PairPDOrdinary::contact_micromodulus(int i, int j) const
+{
+  const double E = 0.5 * (coef[YOUNG][i][i] + coef[YOUNG][j][j]);
+  return pd_pmb_micromodulus(model_dim, E, horizon(i, j), thickness);
+}

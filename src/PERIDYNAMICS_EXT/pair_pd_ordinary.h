@@ -27,6 +27,7 @@ class PairPDOrdinary : public PairPD {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
+  double contact_micromodulus(int, int) const override;
 
  protected:
   int influence;       // pd_influence_kind

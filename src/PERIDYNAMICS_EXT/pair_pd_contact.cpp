@@ -1,0 +1,238 @@
+/* ----------------------------------------------------------------------
+   PERIDYNAMICS_EXT: pair_style pd/contact (MS07 eq. 32-34).
+     pair_style pd/contact
+     pair_coeff I J [stiffness <c_s>] [distance <d>]
+   Used next to a pd/ material style with pair_style hybrid/overlay, or
+   alone with explicit stiffness. Pairs of atoms that were bond partners in
+   the reference configuration never get contact forces: the material
+   pushes them (broken bonds resist compression, T14 6.1.3), so no pair is
+   pushed twice.
+------------------------------------------------------------------------- */
+
+#include "pair_pd_contact.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "pair_pd.h"
+
+#include <cmath>
+#include <cstring>
+
+extern "C" {
+#include "pd_contact.h"
+}
+
+using namespace LAMMPS_NS;
+
+PairPDContact::PairPDContact(LAMMPS *lmp) :
+    Pair(lmp), stiffness(nullptr), distance(nullptr), cutmax_contact(0.0), material(nullptr),
+    dim(3), thickness(0.0), report(0), npairs(0), maxpairs(0), pairs(nullptr)
+{
+  restartinfo = 1;
+  single_enable = 0;
+  no_virial_fdotr_compute = 1;
+}
+
+PairPDContact::~PairPDContact()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(stiffness);
+    memory->destroy(distance);
+  }
+  memory->destroy(pairs);
+}
+
+void PairPDContact::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  memory->create(stiffness, n + 1, n + 1, "pair:stiffness");
+  memory->create(distance, n + 1, n + 1, "pair:distance");
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) {
+      setflag[i][j] = 0;
+      stiffness[i][j] = distance[i][j] = NAN;
+    }
+}
+
+void PairPDContact::settings(int narg, char **arg)
+{
+  if (narg) error->all(FLERR, "Pair style pd/contact: unknown keyword '{}' (it takes none yet)", arg[0]);
+}
+
+void PairPDContact::coeff(int narg, char **arg)
+{
+  if (narg < 2) error->all(FLERR, "Incorrect args for pair coefficients");
+  if (!allocated) allocate();
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  double cs = NAN, d = NAN;
+  for (int iarg = 2; iarg < narg; iarg += 2) {
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair pd/contact coeff: '{}' needs a value", arg[iarg]);
+    const double v = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (strcmp(arg[iarg], "stiffness") == 0) cs = v;
+    else if (strcmp(arg[iarg], "distance") == 0) d = v;
+    else error->all(FLERR, "Pair pd/contact coeff: unknown keyword '{}' (stiffness, distance)", arg[iarg]);
+    if (!(v > 0.0)) error->all(FLERR, "Pair pd/contact coeff: {} must be positive, got {}", arg[iarg], v);
+  }
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      stiffness[i][j] = cs;
+      distance[i][j] = d;
+      setflag[i][j] = 1;
+    }
+}
+
+void PairPDContact::init_style()
+{
+  if (!atom->vfrac_flag || !atom->x0)
+    error->all(FLERR, "Pair pd/contact requires atom_style peri (volumes and reference positions)");
+  if (!force->newton_pair) error->all(FLERR, "Pair pd/contact needs 'newton on'");
+  material = dynamic_cast<PairPD *>(force->pair_match("pd/bond", 1));
+  if (!material) material = dynamic_cast<PairPD *>(force->pair_match("pd/ordinary", 1));
+  dim = domain->dimension;
+  thickness = material ? material->plate_thickness() : 0.0;
+  if (dim == 2 && !(thickness > 0.0))
+    error->all(FLERR, "Pair pd/contact in 2D takes the plate thickness from the pd/ material style");
+
+  // the list's cutoff: the largest contact distance, from the largest volume
+  double vmax = 0.0, v;
+  for (int i = 0; i < atom->nlocal; i++) vmax = MAX(vmax, atom->vfrac[i]);
+  MPI_Allreduce(&vmax, &v, 1, MPI_DOUBLE, MPI_MAX, world);
+  cutmax_contact = 2.0 * pd_contact_radius(dim, v, thickness);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (!std::isnan(distance[i][j])) cutmax_contact = MAX(cutmax_contact, distance[i][j]);
+      if (std::isnan(stiffness[i][j]) && !material)
+        error->all(FLERR, "Pair pd/contact coeff {} {}: without a pd/ material style (hybrid/overlay) "
+                   "give 'stiffness <c_s>'", i, j);
+    }
+
+  // a half list of its own, with its own short cutoff: not the horizon
+  const int irequest = neighbor->request(this, instance_me);
+  neighbor->requests[irequest]->cut = 1;
+  neighbor->requests[irequest]->cutoff = cutmax_contact + neighbor->skin;
+  report = 1;
+}
+
+double PairPDContact::init_one(int i, int j)
+{
+  if (!setflag[i][j]) {
+    stiffness[i][j] = 0.5 * (stiffness[i][i] + stiffness[j][j]);
+    distance[i][j] = 0.5 * (distance[i][i] + distance[j][j]);
+  }
+  // default stiffness: 15 times the material's micromodulus (MS07)
+  if (std::isnan(stiffness[i][j]) && material) stiffness[i][j] = 15.0 * material->contact_micromodulus(i, j);
+  stiffness[j][i] = stiffness[i][j];
+  distance[j][i] = distance[i][j];
+  return cutmax_contact;
+}
+
+// Keep the candidates that were not bond partners: reference distance
+// beyond the material's horizon (all of them without a material style).
+void PairPDContact::filter_pairs()
+{
+  double **x0 = atom->x0;
+  const int *type = atom->type;
+  npairs = 0;
+  bigint candidates = 0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    candidates += list->numneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+      if (material) {
+        double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+        domain->minimum_image(d[0], d[1], d[2]);
+        const double h = material->horizon(type[i], type[j]);
+        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= h * h) continue;
+      }
+      if (npairs == maxpairs) {
+        maxpairs = 2 * maxpairs + 1024;
+        memory->grow(pairs, 2 * maxpairs, "pair:pairs");
+      }
+      pairs[2 * npairs] = i;
+      pairs[2 * npairs + 1] = j;
+      npairs++;
+    }
+  }
+  if (report) {
+    report = 0;
+    bigint mine[2] = {candidates, npairs}, all[2];
+    MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (comm->me == 0)
+      utils::logmesg(lmp, "pd/contact: list cutoff {:.6g} (contact distance {:.6g} + skin): {:.2f} "
+                     "neighbours per atom, {:.2f} of them never bond partners\n",
+                     cutmax_contact + neighbor->skin, cutmax_contact, 2.0 * all[0] / MAX(atom->natoms, 1),
+                     2.0 * all[1] / MAX(atom->natoms, 1));
+  }
+}
+
+void PairPDContact::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  if (vflag_atom) error->all(FLERR, "Pair pd/contact computes no per-atom virial");
+  if (neighbor->ago == 0) filter_pairs();
+  double **x = atom->x, **f = atom->f;
+  const double *vol = atom->vfrac;
+  const int *type = atom->type;
+  pd_tally t = {};
+  t.eatom = eflag_atom ? eatom : nullptr;
+  pd_tally *tp = evflag ? &t : nullptr;
+  for (int p = 0; p < npairs; p++) {
+    const int i = pairs[2 * p], j = pairs[2 * p + 1];
+    const int ti = type[i], tj = type[j];
+    const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+    const double dist = std::isnan(distance[ti][tj])
+        ? pd_contact_radius(dim, vol[i], thickness) + pd_contact_radius(dim, vol[j], thickness)
+        : distance[ti][tj];
+    pd_contact_pair(stiffness[ti][tj], dist, vol[i], vol[j], d, f[i], f[j], tp, i, j);
+  }
+  if (evflag) {
+    if (eflag_global) eng_vdwl += t.energy;
+    if (vflag_global)
+      for (int k = 0; k < 6; k++) virial[k] += t.virial[k];
+  }
+}
+
+void PairPDContact::write_restart(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) {
+        fwrite(&stiffness[i][j], sizeof(double), 1, fp);
+        fwrite(&distance[i][j], sizeof(double), 1, fp);
+      }
+    }
+}
+
+void PairPDContact::read_restart(FILE *fp)
+{
+  allocate();
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (setflag[i][j]) {
+        if (comm->me == 0) {
+          utils::sfread(FLERR, &stiffness[i][j], sizeof(double), 1, fp, nullptr, error);
+          utils::sfread(FLERR, &distance[i][j], sizeof(double), 1, fp, nullptr, error);
+        }
+        MPI_Bcast(&stiffness[i][j], 1, MPI_DOUBLE, 0, world);
+        MPI_Bcast(&distance[i][j], 1, MPI_DOUBLE, 0, world);
+      }
+    }
+}

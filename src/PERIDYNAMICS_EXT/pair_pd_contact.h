@@ -1,0 +1,53 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDYNAMICS_EXT: pair_style pd/contact, short-range contact forces on
+   their own short neighbor list.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(pd/contact,PairPDContact);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_PD_CONTACT_H
+#define LMP_PAIR_PD_CONTACT_H
+
+#include "pair.h"
+
+namespace LAMMPS_NS {
+
+class PairPDContact : public Pair {
+ public:
+  PairPDContact(class LAMMPS *);
+  ~PairPDContact() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override {}
+  void read_restart_settings(FILE *) override {}
+
+ protected:
+  double **stiffness;     // c_s per type pair; NaN: 15 c of the material (MS07)
+  double **distance;      // contact distance per type pair; NaN: r_i + r_j from volumes
+  double cutmax_contact;  // the list's cutoff (largest contact distance)
+  class PairPD *material; // the pd/ material style (c, horizon), if any
+  int dim;
+  double thickness;
+  int report;             // log the list's size at the next build
+  // contact candidates of this neighbor list: pairs that were never bond
+  // partners (those are the material's business), rebuilt on reneighboring
+  int npairs, maxpairs;
+  int *pairs;             // i, j interleaved
+
+  void allocate();
+  void filter_pairs();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
