@@ -244,7 +244,7 @@ void FixPDBonds::map_partners(bool setup)
   const double cut = comm->get_comm_cutoff(), cutsq = cut * cut;
   const int nall = atom->nlocal + atom->nghost;
   double **x = atom->x;
-  const bigint lost_before = nlost_local;
+  const bigint lost_before = nlost_local;    // intact bonds lost so far
   for (int i = 0; i < nowned; i++)
     for (int k = 0; k < npartner[i]; k++) {
       int j = atom->map(partner[i][k]);
@@ -255,8 +255,9 @@ void FixPDBonds::map_partners(bool setup)
         if (dx * dx + dy * dy + dz * dz > cutsq) j = -1;
       }
       if (j < 0) {
+        // a broken bond whose ends drifted apart is simply gone; an intact one is lost
+        if (r0[i][k] > 0.0) nlost_local++;
         remove_bond(i, k--);
-        nlost_local++;
         continue;
       }
       far[i][k] = j;

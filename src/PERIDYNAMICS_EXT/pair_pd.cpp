@@ -158,8 +158,7 @@ std::vector<double> PairPD::parse_values(int narg, char **arg, int iarg, std::ve
     if (iarg + 1 < narg && strcmp(arg[iarg], "Gc") == 0) {
       values[iGc] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       iarg += 2;
-    } else if (values[ifail] == PD_FAIL_STRETCH) {
-      if (iarg >= narg) error->all(FLERR, "Pair {} coeff: 'fail stretch' needs s0 or 'Gc <Gc>'", style);
+    } else if (values[ifail] == PD_FAIL_STRETCH && iarg < narg && utils::is_double(arg[iarg])) {
       values[is0] = utils::numeric(FLERR, arg[iarg], false, lmp);
       iarg++;
     }
@@ -265,6 +264,9 @@ double PairPD::init_one(int i, int j)
     coef[is0][i][j] = MIN(coef[is0][i][i], coef[is0][j][j]);
     coef[ifail][i][j] = MAX(coef[ifail][i][i], coef[ifail][j][j]);
   }
+  // an interface with the stretch law but no s0 of its own: the smaller of
+  // the two materials' (MS07 eq. 31)
+  if (std::isnan(coef[is0][i][j])) coef[is0][i][j] = MIN(coef[is0][i][i], coef[is0][j][j]);
   for (size_t p = 0; p < names.size(); p++) coef[p][j][i] = coef[p][i][j];
   return horizon(i, j);
 }
@@ -401,8 +403,11 @@ void PairPD::check_failure(int i, int j, double E, double nu)
     } else if (given(iGc, i, j)) {
       coef[is0][i][j] = pd_critical_stretch(dim(), model_dim == PD_PLANE_STRAIN, E, nu,
                                             horizon(i, j), value(iGc, i, j));
+    } else if (i == j) {
+      error->all(FLERR, "Pair {} coeff {} {}: 'fail stretch' needs s0 or 'Gc <Gc>' (here or in "
+                 "the material file)", style, i, j);
     } else {
-      error->all(FLERR, "Pair {} coeff {} {}: 'fail stretch' needs s0 or 'Gc <Gc>'", style, i, j);
+      coef[is0][i][j] = NAN;    // from the two materials when mixed (init_one)
     }
   } else {
     coef[is0][i][j] = INFINITY;

@@ -109,12 +109,12 @@ void PairPDBond::compute(int eflag, int vflag)
   t.eatom = eflag_atom ? eatom : nullptr;
   pd_tally *tp = evflag ? &t : nullptr;
   if (plastic) {
-    if (bonds->has_broken())
-      error->all(FLERR, "Pair pd/bond: microplastic bonds cannot be broken (pre-cracks are not "
-                 "supported with them)");
-    pd_microplastic mp = {coef[YIELD][0], bonds->history_data(), 0.0};
+    if (bonds->has_broken() || law != PD_FAIL_NONE)
+      error->all(FLERR, "Pair pd/bond: microplastic bonds cannot be broken (no failure law or "
+                 "pre-crack in a style with microplastic pairs)");
+    pd_microplastic mp = {coef[YIELD][0], bonds->history_data(), 0.0, 0.0};
     pd_microplastic_forces(&v, &mat, &mp, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
-    bonds->add_dissipated(mp.dissipated);
+    bonds->add_dissipated(mp.dissipated, mp.dissipated_joule);
   } else if (failing()) {
     pd_failure fail = failure_state();
     pd_pmb_forces(&v, &mat, &fail, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);

@@ -89,10 +89,10 @@ void PairPDOrdinary::check_coeff(int i, int j)
   if (!given(HORIZON, i, j) || value(HORIZON, i, j) <= 0.0)
     error->all(FLERR, "Pair pd/ordinary coeff {} {}: horizon missing or not positive", i, j);
   if (i != j) {
-    // interface bonds: their failure (critical stretch) may be given here
-    if (given(ifail, i, j) && value(ifail, i, j) == PD_FAIL_STRETCH && !given(is0, i, j))
-      error->all(FLERR, "Pair pd/ordinary coeff {} {}: an interface takes 'fail stretch <s0>'", i, j);
-    check_failure(i, j, NAN, NAN);
+    // interface bonds: their critical stretch may be given here (an s0, or
+    // by default the smaller of the two materials')
+    if (given(is0, i, j) || !given(ifail, i, j)) check_failure(i, j, NAN, NAN);
+    else coef[is0][i][j] = NAN;
     return;
   }
   for (int p : {BULK, SHEAR, YOUNG})

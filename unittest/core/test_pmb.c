@@ -101,7 +101,7 @@ int main(void)
     double plastic = 0.0, x[6] = {0, 0, 0, h, 0, 0}, f[6];
     pd_bond_view v = lattice_view(&l);
     pd_pmb mat = {1, &c};
-    pd_microplastic mp = {&sy, &plastic, 0.0};
+    pd_microplastic mp = {&sy, &plastic, 0.0, 0.0};
     const double stretches[] = {1e-3, 2e-3, 3e-3, 2e-3, 0.0};
     double force[5];
     for (int k = 0; k < 5; k++) {
@@ -118,7 +118,7 @@ int main(void)
     check_rel("microplastic: plastic work = c sy |total plastic flow| |xi|", mp.dissipated,
               c * sy * (2e-3 + 1e-3) * h, 1e-9);
     double plastic2 = 0.0, g[6] = {0}, f2[6] = {0};
-    pd_microplastic mp2 = {&big, &plastic2, 0.0};
+    pd_microplastic mp2 = {&big, &plastic2, 0.0, 0.0};
     x[3] = h * 1.01;
     pd_microplastic_forces(&v, &mat, &mp2, l.type, x, l.vol, g, NULL);
     pd_pmb_forces(&v, &mat, NULL, l.type, x, l.vol, f2, NULL);

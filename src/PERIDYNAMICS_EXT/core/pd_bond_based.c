@@ -11,7 +11,7 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
          const double *restrict vol, double *restrict f, pd_tally *tally,
          const int weighted, const int tallied, const int plastic, const int failing)
 {
-  double work = 0.0, released = 0.0, released_joule = 0.0;
+  double work = 0.0, work_joule = 0.0, released = 0.0, released_joule = 0.0;
   long nbroken = 0;
   const int nt = mat->ntypes;
   for (int i = 0; i < b->nowner; i++) {
@@ -45,8 +45,9 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
         const double excess = e > sy ? e - sy : (e < -sy ? e + sy : 0.0);
         if (excess != 0.0) {
           *sp += excess;
-          work += c * sy * fabs(excess) * r0 * (weighted ? b->weight[row + k] : 1.0) *
-                  0.5 * (vol[j] + vi);
+          const double wp = c * sy * fabs(excess) * r0 * (weighted ? b->weight[row + k] : 1.0);
+          work += wp * 0.5 * (vol[j] + vi);
+          work_joule += wp * vol[j] * vi;
         }
         s -= *sp;
       }
@@ -89,7 +90,10 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
     f[3 * i + 1] += fyi;
     f[3 * i + 2] += fzi;
   }
-  if (plastic) mp->dissipated += work;
+  if (plastic) {
+    mp->dissipated += work;
+    mp->dissipated_joule += work_joule;
+  }
   if (failing) {
     fail->released += released;
     fail->released_joule += released_joule;

@@ -19,6 +19,7 @@ typedef struct pd_microplastic {
   const double *sy;   /* yield stretch per type pair (ntypes x ntypes) */
   double *plastic;    /* per-bond plastic stretch, laid out as the bonds */
   double dissipated;  /* plastic work added by each call (energy-density sum) */
+  double dissipated_joule; /* the same in joules */
 } pd_microplastic;
 
 /* Force density on every bond end: f_i += V_j c s w e_ij, f_j -= V_i c s w e_ij,
