@@ -23,6 +23,10 @@ print("speed-up (legacy time / pd time):")
 for new, old in [("pd_bond", "peri_pmb"), ("pd_bond_legacy", "peri_pmb"),
                  ("pd_ordinary", "peri_lps"), ("pd_ordinary_legacy", "peri_lps")]:
     print(f"  {new:20s} vs {old:10s} {times[old] / times[new]:6.2f}x")
+print("cost of contact (hybrid/overlay with pd/contact, time / time without):")
+print(f"  {'pd_ordinary_contact':20s} {times['pd_ordinary_contact'] / times['pd_ordinary']:6.2f}x")
+nb = re.findall(r"pd/contact: list cutoff \S+ .*?: ([0-9.]+) neighbours per atom", log)
+if nb: print(f"  contact list: {nb[0]} neighbours per atom (cutoff = contact distance + skin)")
 print("cost of the nonlinear strain (time / time of m = 1/2):")
 for new in ("pd_ordinary_m0", "pd_ordinary_m-1"):
     print(f"  {new:20s} {times[new] / times['pd_ordinary']:6.2f}x")
