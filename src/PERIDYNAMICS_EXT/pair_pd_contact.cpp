@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
    PERIDYNAMICS_EXT: pair_style pd/contact (MS07 eq. 32-34).
-     pair_style pd/contact
+     pair_style pd/contact [friction <mu>]
      pair_coeff I J [stiffness <c_s>] [distance <d>]
    Used next to a pd/ material style with pair_style hybrid/overlay, or
    alone with explicit stiffness. Pairs of atoms that were bond partners in
@@ -33,7 +33,7 @@ using namespace LAMMPS_NS;
 
 PairPDContact::PairPDContact(LAMMPS *lmp) :
     Pair(lmp), stiffness(nullptr), distance(nullptr), cutmax_contact(0.0), material(nullptr),
-    dim(3), thickness(0.0), report(0), npairs(0), maxpairs(0), pairs(nullptr)
+    friction(0.0), dim(3), thickness(0.0), report(0), npairs(0), maxpairs(0), pairs(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -68,7 +68,15 @@ void PairPDContact::allocate()
 
 void PairPDContact::settings(int narg, char **arg)
 {
-  if (narg) error->all(FLERR, "Pair style pd/contact: unknown keyword '{}' (it takes none yet)", arg[0]);
+  friction = 0.0;
+  for (int iarg = 0; iarg < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "friction") != 0)
+      error->all(FLERR, "Pair style pd/contact: unknown keyword '{}' (friction)", arg[iarg]);
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair style pd/contact: 'friction' needs a coefficient");
+    friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (!(friction >= 0.0))
+      error->all(FLERR, "Pair style pd/contact: friction coefficient {} must not be negative", friction);
+  }
 }
 
 void PairPDContact::coeff(int narg, char **arg)
@@ -100,6 +108,8 @@ void PairPDContact::init_style()
   if (!atom->vfrac_flag || !atom->x0)
     error->all(FLERR, "Pair pd/contact requires atom_style peri (volumes and reference positions)");
   if (!force->newton_pair) error->all(FLERR, "Pair pd/contact needs 'newton on'");
+  if (friction > 0.0 && !comm->ghost_velocity)
+    error->all(FLERR, "Pair pd/contact with friction needs the ghosts' velocities: 'comm_modify vel yes'");
   material = dynamic_cast<PairPD *>(force->pair_match("pd/bond", 1));
   if (!material) material = dynamic_cast<PairPD *>(force->pair_match("pd/ordinary", 1));
   dim = domain->dimension;
@@ -185,7 +195,7 @@ void PairPDContact::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   if (vflag_atom) error->all(FLERR, "Pair pd/contact computes no per-atom virial");
   if (neighbor->ago == 0) filter_pairs();
-  double **x = atom->x, **f = atom->f;
+  double **x = atom->x, **f = atom->f, **v = atom->v;
   const double *vol = atom->vfrac;
   const int *type = atom->type;
   pd_tally t = {};
@@ -198,7 +208,8 @@ void PairPDContact::compute(int eflag, int vflag)
     const double dist = std::isnan(distance[ti][tj])
         ? pd_contact_radius(dim, vol[i], thickness) + pd_contact_radius(dim, vol[j], thickness)
         : distance[ti][tj];
-    pd_contact_pair(stiffness[ti][tj], dist, vol[i], vol[j], d, f[i], f[j], tp, i, j);
+    const double dv[3] = {v[j][0] - v[i][0], v[j][1] - v[i][1], v[j][2] - v[i][2]};
+    pd_contact_pair(stiffness[ti][tj], dist, friction, vol[i], vol[j], d, dv, f[i], f[j], tp, i, j);
   }
   if (evflag) {
     if (eflag_global) eng_vdwl += t.energy;
@@ -209,6 +220,7 @@ void PairPDContact::compute(int eflag, int vflag)
 
 void PairPDContact::write_restart(FILE *fp)
 {
+  write_restart_settings(fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
@@ -221,6 +233,7 @@ void PairPDContact::write_restart(FILE *fp)
 
 void PairPDContact::read_restart(FILE *fp)
 {
+  read_restart_settings(fp);
   allocate();
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
@@ -235,4 +248,15 @@ void PairPDContact::read_restart(FILE *fp)
         MPI_Bcast(&distance[i][j], 1, MPI_DOUBLE, 0, world);
       }
     }
+}
+
+void PairPDContact::write_restart_settings(FILE *fp)
+{
+  fwrite(&friction, sizeof(double), 1, fp);
+}
+
+void PairPDContact::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) utils::sfread(FLERR, &friction, sizeof(double), 1, fp, nullptr, error);
+  MPI_Bcast(&friction, 1, MPI_DOUBLE, 0, world);
 }

@@ -27,14 +27,15 @@ class PairPDContact : public Pair {
   double init_one(int, int) override;
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
-  void write_restart_settings(FILE *) override {}
-  void read_restart_settings(FILE *) override {}
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
 
  protected:
   double **stiffness;     // c_s per type pair; NaN: 15 c of the material (MS07)
   double **distance;      // contact distance per type pair; NaN: r_i + r_j from volumes
   double cutmax_contact;  // the list's cutoff (largest contact distance)
   class PairPD *material; // the pd/ material style (c, horizon), if any
+  double friction;        // Coulomb friction coefficient (0: none)
   int dim;
   double thickness;
   int report;             // log the list's size at the next build

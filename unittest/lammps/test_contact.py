@@ -13,7 +13,7 @@ from lmptest import *
 d = workdir()
 
 
-def blocks(pairs, steps=3000, ranks=1, data=None, dump=""):
+def blocks(pairs, steps=3000, ranks=1, data=None, dump="", vy=0.0):
     atoms = (f"read_data {data}\n" if data else
              "region box block -1 17 0 8 0 8\ncreate_box 2 box\nregion a block 0 5 INF INF INF INF\n"
              "region b block 10 15 INF INF INF INF\ncreate_atoms 1 region a\ncreate_atoms 2 region b\n")
@@ -27,8 +27,10 @@ group b type 2
 set group all density 1180
 set group all volume {VOLUME}
 {pairs}
-velocity a set 20 0 0 units box
-velocity b set -20 0 0 units box
+velocity a set 20 {vy} 0 units box
+velocity b set -20 {-vy} 0 units box
+variable vya equal vcm(a,y)
+variable py equal mass(all)*vcm(all,y)
 variable gap equal bound(b,xmin)-bound(a,xmax)
 variable px equal mass(all)*vcm(all,x)
 variable pa equal mass(a)*vcm(a,x)
@@ -43,7 +45,7 @@ variable etot equal c_KEJ+c_PEJ
 fix 1 all nve
 timestep 2e-8
 thermo 50
-thermo_style custom step c_KEJ c_PEJ v_etot v_gap v_px v_pa
+thermo_style custom step c_KEJ c_PEJ v_etot v_gap v_px v_pa v_vya v_py
 thermo_modify format float %.15g
 run {steps}
 {dump}"""
@@ -74,10 +76,29 @@ for ranks in (1, 2):
     finals[ranks] = read_dump(f"{d}/r{ranks}")
 check_le("1 and 2 ranks end at the same positions", max_rel_diff(finals[1], finals[2]), 1e-10, "round-off")
 
+# Coulomb friction (Peridigm-style) in an oblique collision: it slows the
+# sliding of the faces (block A's tangential velocity), conserves momentum,
+# and dissipates. (Without friction the sliding is not untouched either: the
+# faces are rows of particles, whose contact normals tilt as they pass.)
+slide = {}
+for mu in (0.0, 0.5):
+    style = CONTACT.replace("pd/contact\n", f"pd/contact friction {mu}\n", 1) if mu else CONTACT
+    _, rows = run("comm_modify vel yes\n" + blocks(style, vy=10.0), d)
+    slide[mu] = rows[-1]["v_vya"] / rows[0]["v_vya"]
+    if mu:
+        check_le("friction: momentum conserved", max(abs(r["v_px"]) + abs(r["v_py"]) for r in rows) / abs(p0),
+                 1e-12, "equal and opposite")
+        check("friction dissipates (kinetic + elastic energy drops by > 1%)", rows[-1]["v_etot"] < 0.99 * rows[0]["v_etot"])
+print(f"tangential velocity kept: {slide[0.0]:.3f} without friction, {slide[0.5]:.3f} with mu = 0.5")
+check("friction removes tangential motion that frictionless contact keeps",
+      slide[0.5] < 0.5 * slide[0.0], f"{slide[0.5]:.3f} vs {slide[0.0]:.3f}")
+
 bad = [("negative stiffness", "pair_style pd/contact\npair_coeff * * stiffness -1\n", "stiffness must be positive"),
        ("contact alone without stiffness", "pair_style pd/contact\npair_coeff * *\nrun 0\n",
         "without a pd/ material style"),
-       ("unknown keyword", "pair_style pd/contact\npair_coeff * * friction 0.3\n", "unknown keyword 'friction'")]
+       ("unknown keyword", "pair_style pd/contact\npair_coeff * * friction 0.3\n", "unknown keyword 'friction'"),
+       ("friction without ghost velocities", "pair_style pd/contact friction 0.3\npair_coeff * * stiffness 1e20\nrun 0\n",
+        "'comm_modify vel yes'")]
 for what, pairs, message in bad:
     out, _ = run(blocks(pairs, steps=0).split("velocity a")[0] + pairs, d, expect_error=True)
     check(f"bad input, {what}: ERROR names it", message in out)

@@ -19,9 +19,13 @@ static inline double pd_contact_radius(int dim, double vol, double thickness)
 
 /* One candidate pair: adds the force densities to f_i and f_j (3 each) and,
  * when tally is not NULL, the energy (half to each end) and virial.
- * d[] = x_j - x_i. Returns 1 if the pair was in contact. */
-static inline int pd_contact_pair(double cs, double dist, double vi, double vj, const double d[3],
-                                  double *fi, double *fj, pd_tally *tally, int i, int j)
+ * d[] = x_j - x_i. With mu > 0 and dv[] = v_j - v_i, Coulomb friction of
+ * magnitude mu times the normal force opposes the tangential slip
+ * (Peridigm's contact friction); it dissipates and has no energy.
+ * Returns 1 if the pair was in contact. */
+static inline int pd_contact_pair(double cs, double dist, double mu, double vi, double vj,
+                                  const double d[3], const double *dv, double *fi, double *fj,
+                                  pd_tally *tally, int i, int j)
 {
   const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   if (r2 >= dist * dist) return 0;
@@ -31,6 +35,19 @@ static inline int pd_contact_pair(double cs, double dist, double vi, double vj, 
   for (int c = 0; c < 3; c++) {
     fi[c] += vj * tl * d[c];
     fj[c] -= vi * tl * d[c];
+  }
+  if (mu > 0.0 && len > 0.0) {
+    const double n[3] = {d[0] / len, d[1] / len, d[2] / len};
+    const double vn = dv[0] * n[0] + dv[1] * n[1] + dv[2] * n[2];
+    const double vt[3] = {dv[0] - vn * n[0], dv[1] - vn * n[1], dv[2] - vn * n[2]};
+    const double slip = sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]);
+    if (slip > 0.0) {
+      const double ft = mu * push / slip;    /* i is dragged along j's slip */
+      for (int c = 0; c < 3; c++) {
+        fi[c] += vj * ft * vt[c];
+        fj[c] -= vi * ft * vt[c];
+      }
+    }
   }
   if (tally) {
     const double e = 0.25 * cs * (dist - len) * (dist - len) / dist;    /* half of the pair's */
