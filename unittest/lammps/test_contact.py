@@ -51,6 +51,8 @@ run {steps}
 {dump}"""
 
 
+# unwrapped coordinates: restart re-wraps atoms into the periodic y and z
+UNWRAPPED = DUMP.replace("id x y z", "id xu yu zu")
 CONTACT = (f"pair_style hybrid/overlay pd/ordinary pd/contact\n"
            f"pair_coeff * * pd/ordinary E 3.5e9 nu 0.25 horizon {HORIZON}\npair_coeff * * pd/contact\n")
 out, rows = run(blocks(CONTACT, dump=DUMP.format(file="one")), d)
@@ -72,9 +74,18 @@ check("without pd/contact the blocks pass through each other", min(r["v_gap"] fo
 run(blocks(CONTACT, steps=0).split("group a")[0] + "write_data two.data\n", d)
 finals = {}
 for ranks in (1, 2):
-    run(blocks(CONTACT, steps=2600, data="two.data", dump=DUMP.format(file=f"r{ranks}")), d, ranks=ranks)
+    run(blocks(CONTACT, steps=2600, data="two.data", dump=UNWRAPPED.format(file=f"r{ranks}")), d, ranks=ranks)
     finals[ranks] = read_dump(f"{d}/r{ranks}")
 check_le("1 and 2 ranks end at the same positions", max_rel_diff(finals[1], finals[2]), 1e-10, "round-off")
+
+# restart as the faces touch (step 2450 of 2600): the bond families, broken state
+# and the sub-styles' settings come from the file; pair_style hybrid keeps
+# no coefficients in restart files (LAMMPS), so the pair_coeff lines return
+run(blocks(CONTACT, steps=2450, data="two.data", dump="write_restart mid.restart\n"), d)
+run("read_restart mid.restart\n" + CONTACT.split("\n", 1)[1] + "fix 1 all nve\nrun 150\n" +
+    UNWRAPPED.format(file="split"), d)
+check_le("a restart as the faces touch continues as the unsplit run",
+         max_rel_diff(finals[1], read_dump(f"{d}/split")), 1e-12, "round-off after re-sorting")
 
 # Coulomb friction (Peridigm-style) in an oblique collision: it slows the
 # sliding of the faces (block A's tangential velocity), conserves momentum,
