@@ -183,15 +183,9 @@ void FixPDBonds::build_families()
       if (reference_length(i, list->firstneigh[i][jj] & NEIGHMASK) >= 0.0) n++;
     mymax = MAX(mymax, n);
   }
-  MPI_Allreduce(&mymax, &maxpartner, 1, MPI_INT, MPI_MAX, world);
-  maxpartner = MAX(maxpartner, 1);
-  maxexchange = per_atom_max();
-  memory->destroy(partner);
-  memory->destroy(r0);
-  memory->destroy(weight);
-  memory->destroy(history);
-  memory->destroy(far);
-  grow_arrays(atom->nmax);
+  int longest;
+  MPI_Allreduce(&mymax, &longest, 1, MPI_INT, MPI_MAX, world);
+  resize_tables(MAX(longest, 1));
 
   for (int i = 0; i < nlocal; i++) {
     npartner[i] = 0;
@@ -484,8 +478,7 @@ void FixPDBonds::restart(char *buf)
     error->all(FLERR, "Fix pd/bonds: restart file bonds carry {} history values, the pair style "
                "now needs {}", (int) list[4], nhistory);
   built = (int) list[0];
-  maxpartner = (int) list[1];
-  maxexchange = per_atom_max();
+  resize_tables((int) list[1]);
   // totals are kept once, on rank 0, so the global sums carry over
   nlost_local = comm->me == 0 ? (bigint) list[3] : 0;
   dissipated = comm->me == 0 ? list[5] : 0.0;
@@ -493,6 +486,14 @@ void FixPDBonds::restart(char *buf)
   dissipated_joule = comm->me == 0 ? list[7] : 0.0;
   nbroken_local = comm->me == 0 ? (bigint) list[8] : 0;
   any_broken = (int) list[9];
+}
+
+// New row length of the per-atom bond tables (their contents are dropped:
+// memory->grow cannot change the row length of a 2D array in place).
+void FixPDBonds::resize_tables(int rowlength)
+{
+  maxpartner = rowlength;
+  maxexchange = per_atom_max();
   memory->destroy(partner);
   memory->destroy(r0);
   memory->destroy(weight);

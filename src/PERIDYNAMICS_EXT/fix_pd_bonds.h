@@ -119,6 +119,7 @@ class FixPDBonds : public Fix {
   void check_identities();
   void reference_sums();
   void remove_bond(int i, int k);
+  void resize_tables(int rowlength);
   int per_atom_doubles(int i) const;
   int per_atom_max() const;
 };

@@ -102,3 +102,12 @@ void check_momentum(const char *name, const lattice *l, const double *x,
   check_rel(what, 1.0 + (fabs(L[0]) + fabs(L[1]) + fabs(L[2])) / lscale, 1.0, 1e-13);
   free(f);
 }
+
+double classical_energy(double lambda, double mu, const double e[3][3])
+{
+  const double tr = e[0][0] + e[1][1] + e[2][2];
+  double ee = 0.0;
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) ee += e[i][j] * e[i][j];
+  return 0.5 * lambda * tr * tr + mu * ee;
+}

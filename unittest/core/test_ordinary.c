@@ -17,14 +17,6 @@ static double eval_ordinary(const lattice *l, const double *x, double *f, void *
   return ordinary_eval(l, m->lambda, m->mu, m->order, x, f, NULL, NULL);
 }
 
-static double classical(double lambda, double mu, const double e[3][3])
-{
-  const double tr = e[0][0] + e[1][1] + e[2][2];
-  double ee = 0.0;
-  for (int i = 0; i < 3; i++)
-    for (int j = 0; j < 3; j++) ee += e[i][j] * e[i][j];
-  return 0.5 * lambda * tr * tr + mu * ee;
-}
 
 int main(void)
 {
@@ -73,10 +65,10 @@ int main(void)
         for (int j = 0; j <= i; j++) e[i][j] = e[j][i] = 1e-4 * urand(&seed);
       lattice_strain(&l, e, x);
       ordinary_eval(&l, bar.lambda, bar.mu, 0.5, x, f, psi, theta);
-      check_rel("m = 1/2 random strain: classical energy", psi[ctr], classical(lambda, G, e), 0.02);
+      check_rel("m = 1/2 random strain: classical energy", psi[ctr], classical_energy(lambda, G, e), 0.02);
       /* Small strain: every order m agrees with LPS to O(strain). */
       ordinary_eval(&l, bar.lambda, bar.mu, 0.0, x, f, psi, theta);
-      check_rel("m = 0, random small strain: classical energy", psi[ctr], classical(lambda, G, e), 0.02);
+      check_rel("m = 0, random small strain: classical energy", psi[ctr], classical_energy(lambda, G, e), 0.02);
     }
     lattice_free(&l);
     free(x);
@@ -118,7 +110,7 @@ int main(void)
         ordinary_eval(&l, b2.lambda, b2.mu, 0.5, x, f, psi, NULL);
         check_rel(k == 0 ? "2D plane stress random strain: classical energy"
                          : "2D plane strain random strain: classical energy",
-                  psi[ctr], classical(lambda2, pmma.G, e), 0.02);
+                  psi[ctr], classical_energy(lambda2, pmma.G, e), 0.02);
       }
     }
     lattice_free(&l);

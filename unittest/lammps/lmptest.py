@@ -147,4 +147,16 @@ PAIRS = {
 PAIRS["pd/ordinary 2D m=0"] = ("pair_style pd/ordinary plane stress thickness 1e-3\n"
                                f"pair_coeff * * E 3.5e9 nu 0.35 horizon {HORIZON} m 0\n")
 
+# kinetic and elastic energy in joules (the thermo energies are sums of
+# energy densities): v_etot = c_KEJ + c_PEJ
+ENERGY_JOULES = """compute vf all property/atom vfrac
+compute keV all ke/atom
+variable keJ atom c_keV*c_vf
+compute KEJ all reduce sum v_keJ
+compute peV all pe/atom
+variable peJ atom c_peV*c_vf
+compute PEJ all reduce sum v_peJ
+variable etot equal c_KEJ+c_PEJ
+"""
+
 DUMP = "write_dump all custom {file} id x y z modify sort id format float %.17g\n"

@@ -34,15 +34,7 @@ variable py equal mass(all)*vcm(all,y)
 variable gap equal bound(b,xmin)-bound(a,xmax)
 variable px equal mass(all)*vcm(all,x)
 variable pa equal mass(a)*vcm(a,x)
-compute vf all property/atom vfrac
-compute keV all ke/atom
-variable keJ atom c_keV*c_vf
-compute KEJ all reduce sum v_keJ
-compute peV all pe/atom
-variable peJ atom c_peV*c_vf
-compute PEJ all reduce sum v_peJ
-variable etot equal c_KEJ+c_PEJ
-fix 1 all nve
+{ENERGY_JOULES}fix 1 all nve
 timestep 2e-8
 thermo 50
 thermo_style custom step c_KEJ c_PEJ v_etot v_gap v_px v_pa v_vya v_py

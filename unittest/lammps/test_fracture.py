@@ -52,14 +52,7 @@ compute dmg all pd/damage
 compute frac all pd/fracture
 variable tipx atom x*(c_dmg>0.3)
 compute tip all reduce max v_tipx
-compute vf all property/atom vfrac
-compute keV all ke/atom
-variable keJ atom c_keV*c_vf
-compute KEJ all reduce sum v_keJ
-compute peV all pe/atom
-variable peJ atom c_peV*c_vf
-compute PEJ all reduce sum v_peJ
-variable total equal c_KEJ+c_PEJ+c_frac[2]
+{ENERGY_JOULES}variable total equal c_KEJ+c_PEJ+c_frac[2]
 {setup}
 run 0
 displace_atoms all ramp y {-STRAIN * H_STRIP / 2} {STRAIN * H_STRIP / 2} y 0 {H_STRIP} units box
