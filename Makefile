@@ -42,8 +42,10 @@ demo: build
 bench: build
 	./bench/run.sh $(LMP)
 
+# Long runs at the papers' resolutions, with their reference numbers printed
 validate: build
-	cd $(BUILD_DIR) && ctest --output-on-failure -L validate
+	./examples/riemann-2d/run.sh $(LMP)
+	./examples/plate-impact-2d/run.sh $(LMP)
 
 clean:
 	rm -rf $(BUILD_DIR)

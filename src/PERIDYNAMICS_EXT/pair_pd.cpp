@@ -93,7 +93,7 @@ void PairPD::settings(int narg, char **arg)
   recontact = 1;
   model_dim = PD_3D;
   thickness = 0.0;
-  const std::string style = force->pair_style;
+  const std::string style = style_name();
   int iarg = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "legacy") == 0 || strcmp(arg[iarg], "norecontact") == 0) {
@@ -116,7 +116,7 @@ void PairPD::settings(int narg, char **arg)
       continue;
     }
     const int used = parse_setting(narg, arg, iarg);
-    if (!used) error->all(FLERR, "Pair style {}: unknown keyword '{}'", force->pair_style, arg[iarg]);
+    if (!used) error->all(FLERR, "Pair style {}: unknown keyword '{}'", style_name(), arg[iarg]);
     iarg += used;
   }
   if (domain->dimension == 2 && (model_dim == PD_3D || thickness == 0.0))
@@ -147,7 +147,7 @@ void PairPD::coeff(int narg, char **arg)
 // keyword/value pairs from arg[iarg] on, over the given values
 std::vector<double> PairPD::parse_values(int narg, char **arg, int iarg, std::vector<double> values)
 {
-  const std::string style = force->pair_style;
+  const std::string style = style_name();
   while (iarg < narg && strcmp(arg[iarg], "fail") == 0) {
     // fail stretch <s0> | fail stretch Gc <Gc> | fail energy [Gc <Gc>]
     if (iarg + 1 >= narg) error->all(FLERR, "Pair {} coeff: 'fail' needs a law: stretch or energy", style);
@@ -169,11 +169,11 @@ std::vector<double> PairPD::parse_values(int narg, char **arg, int iarg, std::ve
     if (p < 0) {
       std::string known;
       for (auto &n : names) known += " " + n;
-      error->all(FLERR, "Pair {} coeff: unknown keyword '{}' (expected one of:{})", force->pair_style,
+      error->all(FLERR, "Pair {} coeff: unknown keyword '{}' (expected one of:{})", style_name(),
                  arg[iarg], known);
     }
     if (iarg + 1 >= narg)
-      error->all(FLERR, "Pair {} coeff: keyword '{}' needs a value", force->pair_style, arg[iarg]);
+      error->all(FLERR, "Pair {} coeff: keyword '{}' needs a value", style_name(), arg[iarg]);
     values[p] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
   }
   return values;
@@ -197,7 +197,7 @@ int PairPD::set_coeff_pairs(int ilo, int ihi, int jlo, int jhi, const std::vecto
 // values on top; unlike types mix (init_one) unless given by another line.
 void PairPD::read_material_file(int narg, char **arg)
 {
-  const std::string style = force->pair_style;
+  const std::string style = style_name();
   const int ntypes = atom->ntypes;
   if (strcmp(arg[0], "*") != 0 || strcmp(arg[1], "*") != 0)
     error->all(FLERR, "Pair {} coeff file: use 'pair_coeff * * file <path> <one material per type>'", style);
@@ -273,7 +273,7 @@ double PairPD::init_one(int i, int j)
 
 void PairPD::init_style()
 {
-  const std::string style = force->pair_style;
+  const std::string style = style_name();
   // interface pairs not given explicitly are mixed now (LAMMPS mixes them
   // after init_style), so that the horizons and the bond fingerprint below
   // are complete; init_one is idempotent
@@ -372,7 +372,7 @@ void PairPD::init_style()
 // store, exactly representable as a double (52 bits of FNV-1a).
 double PairPD::family_key() const
 {
-  std::string s = fmt::format("{}|{}|{}|{}|{}|{}|{}", force->pair_style, legacy, lattice_spacing,
+  std::string s = fmt::format("{}|{}|{}|{}|{}|{}|{}", style_name(), legacy, lattice_spacing,
                               (int) model_dim, uses_weights(), history_per_bond(), family_settings());
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) s += fmt::format("|{}", horizon(i, j));
@@ -385,7 +385,7 @@ double PairPD::family_key() const
 // (for the critical stretch from G_c, MS07 eq. 28-29).
 void PairPD::check_failure(int i, int j, double E, double nu)
 {
-  const std::string style = force->pair_style;
+  const std::string style = style_name();
   if (!given(ifail, i, j)) {
     if (given(is0, i, j) && !std::isinf(value(is0, i, j)))
       error->all(FLERR, "Pair {} coeff {} {}: s0 needs 'fail stretch'", style, i, j);
@@ -476,7 +476,7 @@ void PairPD::tally(const pd_tally &t)
 {
   if (vflag_atom)
     error->all(FLERR, "Pair {} computes no per-atom virial (compute stress/atom); use the global "
-               "pressure", force->pair_style);
+               "pressure", style_name());
   if (eflag_global) eng_vdwl += t.energy;
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += t.virial[k];
@@ -498,16 +498,16 @@ void PairPD::report_setup()
   MPI_Allreduce(&dtmin, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
   if (comm->me == 0) {
     std::string hs;
-    for (int i = 1; i <= atom->ntypes; i++) hs += fmt::format(" {}", horizon(i, i));
+    for (int i = 1; i <= atom->ntypes; i++) hs += fmt::format(" {:.6g}", horizon(i, i));
     const char *dims[] = {"3D", "2D plane stress", "2D plane strain"};
     utils::logmesg(lmp, "{}: {}{}, horizon{}{}; stable time step estimate (MS07 eq. 43) {:.6g}, "
-                   "timestep {:.6g} is {:.3f} of it\n", force->pair_style, dims[model_dim],
+                   "timestep {:.6g} is {:.3f} of it\n", style_name(), dims[model_dim],
                    dim() == 2 ? fmt::format(" (thickness {})", thickness) : "", hs,
                    legacy ? " (legacy PERI mode)" : "", dt, update->dt, update->dt / dt);
     report_extra();
   }
   if (update->dt > dt)
-    error->warning(FLERR, "Pair {}: timestep {} exceeds the stable estimate {}", force->pair_style,
+    error->warning(FLERR, "Pair {}: timestep {} exceeds the stable estimate {}", style_name(),
                    update->dt, dt);
 }
 

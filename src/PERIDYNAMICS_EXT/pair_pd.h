@@ -39,6 +39,8 @@ class PairPD : public Pair {
   double memory_usage() override;
 
   double horizon(int itype, int jtype) const { return coef[0][itype][jtype]; }
+  // the style's own name, also under pair_style hybrid
+  virtual const char *style_name() const = 0;
   // quadrature weight of a new bond (used only when uses_weights())
   virtual double bond_weight(int itype, int jtype, double r) const;
   FixPDBonds *bond_store() const { return bonds; }

@@ -22,6 +22,7 @@ class PairPDBond : public PairPD {
   ~PairPDBond() override;
   void compute(int, int) override;
   void coeff(int, char **) override;
+  const char *style_name() const override { return "pd/bond"; }
   double contact_micromodulus(int i, int j) const override { return coef[1][i][j]; }
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;

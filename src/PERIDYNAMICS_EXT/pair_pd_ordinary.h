@@ -22,6 +22,7 @@ class PairPDOrdinary : public PairPD {
   ~PairPDOrdinary() override;
   void compute(int, int) override;
   void settings(int, char **) override;
+  const char *style_name() const override { return "pd/ordinary"; }
   void init_style() override;
   double bond_weight(int, int, double) const override;
   void write_restart_settings(FILE *) override;
