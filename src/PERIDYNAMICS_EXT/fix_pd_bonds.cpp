@@ -41,7 +41,7 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     use_weights(0), nhistory(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
     r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), nlost_reported(0), dissipated(0.0), dissipated_joule(0.0), nbroken_local(0), any_broken(0),
     family_key(0.0), list(nullptr),
-    comm_array(nullptr), comm_width(1)
+    comm_array(nullptr), comm_width(1), comm_max(0)
 {
   if (narg != 6 || strcmp(arg[4], "history") != 0)
     error->all(FLERR, "Illegal fix pd/bonds command: expected 'weights|noweights history N' "
@@ -333,6 +333,13 @@ void FixPDBonds::sum_to_owners(double *a, int width)
   PDCompat::reverse_comm(comm, this, width);
 }
 
+void FixPDBonds::max_to_owners(double *a)
+{
+  comm_max = 1;
+  sum_to_owners(a, 1);
+  comm_max = 0;
+}
+
 void FixPDBonds::copy_to_ghosts(double *a, int width)
 {
   comm_array = a;
@@ -367,7 +374,10 @@ void FixPDBonds::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
   for (int i = 0; i < n; i++)
-    for (int w = 0; w < comm_width; w++) comm_array[list[i] * comm_width + w] += buf[m++];
+    for (int w = 0; w < comm_width; w++, m++) {
+      double &a = comm_array[list[i] * comm_width + w];
+      a = comm_max ? MAX(a, buf[m]) : a + buf[m];
+    }
 }
 
 /* ---------------------------------------------------------------------- */

@@ -83,6 +83,7 @@ class FixPDBonds : public Fix {
   // Sum a per-atom array's ghost entries onto their owners, or copy the
   // owners' entries to their ghosts; 'width' doubles per atom, at most 2.
   void sum_to_owners(double *a, int width = 1);
+  void max_to_owners(double *a);
   void copy_to_ghosts(double *a, int width = 1);
 
   // per-atom reference family data, fixed when the families are built
@@ -113,6 +114,7 @@ class FixPDBonds : public Fix {
   class NeighList *list;
   double *comm_array;
   int comm_width;
+  int comm_max;            // reverse comm takes the max instead of the sum
 
   void build_families();
   void map_partners(bool setup);

@@ -16,6 +16,7 @@
 #include "update.h"
 
 #include <cmath>
+#include <cfloat>
 #include <cstdint>
 #include <cstring>
 
@@ -31,11 +32,12 @@ static const char *const FIX_ID = "PD_BONDS";
 
 PairPD::PairPD(LAMMPS *lmp, const std::vector<std::string> &coef_names) :
     Pair(lmp), names(coef_names), coef(nullptr), legacy(0), recontact(1), law(PD_FAIL_NONE),
-    ifail(-1), is0(-1), iGc(-1), model_dim(PD_3D), thickness(0.0), lattice_spacing(0.0),
-    bonds(nullptr), released(nullptr), nreleased(0),
+    ifail(-1), is0(-1), iGc(-1), ialpha(-1), model_dim(PD_3D), thickness(0.0), lattice_spacing(0.0),
+    bonds(nullptr), released(nullptr), s0_new(nullptr), nreleased(0),
     report_pending(0), work(nullptr), nwork(0)
 {
-  names.insert(names.end(), {"fail", "s0", "Gc"});
+  names.insert(names.end(), {"fail", "s0", "Gc", "alpha"});
+  ialpha = coef_index("alpha");
   ifail = coef_index("fail");
   is0 = coef_index("s0");
   iGc = coef_index("Gc");
@@ -55,6 +57,7 @@ PairPD::~PairPD()
   }
   memory->destroy(work);
   memory->destroy(released);
+  memory->destroy(s0_new);
 }
 
 void PairPD::allocate()
@@ -149,8 +152,17 @@ std::vector<double> PairPD::parse_values(int narg, char **arg, int iarg, std::ve
 {
   const std::string style = style_name();
   while (iarg < narg && strcmp(arg[iarg], "fail") == 0) {
-    // fail stretch <s0> | fail stretch Gc <Gc> | fail energy [Gc <Gc>]
+    // fail stretch <s0> | fail stretch Gc <Gc> | fail energy [Gc <Gc>] |
+    // fail legacy <s00> <alpha> (LAMMPS PERI's rule, legacy mode)
     if (iarg + 1 >= narg) error->all(FLERR, "Pair {} coeff: 'fail' needs a law: stretch or energy", style);
+    if (strcmp(arg[iarg + 1], "legacy") == 0) {
+      if (iarg + 3 >= narg) error->all(FLERR, "Pair {} coeff: 'fail legacy' needs s00 and alpha", style);
+      values[ifail] = PD_FAIL_LEGACY;
+      values[is0] = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      values[ialpha] = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+      iarg += 4;
+      continue;
+    }
     if (strcmp(arg[iarg + 1], "stretch") == 0) values[ifail] = PD_FAIL_STRETCH;
     else if (strcmp(arg[iarg + 1], "energy") == 0) values[ifail] = PD_FAIL_ENERGY;
     else error->all(FLERR, "Pair {} coeff: unknown failure law '{}' (stretch, energy)", style, arg[iarg + 1]);
@@ -393,6 +405,12 @@ void PairPD::check_failure(int i, int j, double E, double nu)
     coef[is0][i][j] = INFINITY;
     return;
   }
+  if (value(ifail, i, j) == PD_FAIL_LEGACY) {
+    if (!legacy)
+      error->all(FLERR, "Pair {} coeff {} {}: 'fail legacy' reproduces PERI and needs the 'legacy' "
+                 "pair style keyword", style, i, j);
+    return;
+  }
   if (given(iGc, i, j) && !(value(iGc, i, j) > 0.0))
     error->all(FLERR, "Pair {} coeff {} {}: Gc must be positive, got {}", style, i, j, value(iGc, i, j));
   if (value(ifail, i, j) == PD_FAIL_STRETCH) {
@@ -434,8 +452,15 @@ pd_failure PairPD::failure_state()
   for (int i = 0; i < nall; i++) released[i] = 0.0;
   pd_failure f = {};
   f.law = law;
-  f.recontact = recontact;
-  f.s0 = law == PD_FAIL_STRETCH ? coef[is0][0] : nullptr;
+  f.recontact = law == PD_FAIL_LEGACY ? 0 : recontact;    // PERI drops broken bonds
+  f.s0 = law == PD_FAIL_STRETCH || law == PD_FAIL_LEGACY ? coef[is0][0] : nullptr;
+  if (law == PD_FAIL_LEGACY) {
+    memory->grow(s0_new, nreleased, "pair:s0_new");
+    for (int i = 0; i < nall; i++) s0_new[i] = -INFINITY;
+    f.alpha = coef[ialpha][0];
+    f.s0_atom = atom->s0;
+    f.s0_new = s0_new;
+  }
   f.len0 = bonds->len0_data();
   f.released_atom = released;
   return f;
@@ -446,6 +471,11 @@ pd_failure PairPD::failure_state()
 // somewhere, which all ranks learn together).
 void PairPD::account_failure(const pd_failure &f)
 {
+  if (law == PD_FAIL_LEGACY) {
+    // each atom's s0 for the next step: PERI's max over its intact bonds
+    bonds->max_to_owners(s0_new);
+    for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = std::isinf(s0_new[i]) ? DBL_MAX : s0_new[i];
+  }
   int mine = f.nbroken > 0, any;
   MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
   if (!any) return;

@@ -44,6 +44,7 @@ class PairPD : public Pair {
   // quadrature weight of a new bond (used only when uses_weights())
   virtual double bond_weight(int itype, int jtype, double r) const;
   FixPDBonds *bond_store() const { return bonds; }
+  double legacy_spacing() const { return legacy ? lattice_spacing : 0.0; }
   double plate_thickness() const { return thickness; }
   // micromodulus of a bond-based solid as stiff as this material: the scale
   // of the contact stiffness (pd/contact)
@@ -55,7 +56,7 @@ class PairPD : public Pair {
   int legacy;               // reproduce legacy PERI (partial volumes, ...)
   int recontact;            // broken bonds still push in compression (T14 6.1.3)
   pd_fail_law law;          // the failure law of the style (one for all pairs)
-  int ifail, is0, iGc;      // indices of the failure coefficients
+  int ifail, is0, iGc, ialpha;  // indices of the failure coefficients
   pd_dimension model_dim;   // 3D, plane stress or plane strain
   double thickness;         // plate thickness of a 2D model
   double lattice_spacing;   // legacy partial volumes need it (0: not yet known)
@@ -94,6 +95,7 @@ class PairPD : public Pair {
   pd_failure failure_state();
   void account_failure(const pd_failure &f);
   double *released;         // per-atom released energy of one step (owned + ghost)
+  double *s0_new;           // legacy failure: the new per-atom s0 (owned + ghost)
   int nreleased;
 };
 

@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
    PERIDYNAMICS_EXT: pair_style pd/contact (MS07 eq. 32-34).
-     pair_style pd/contact [friction <mu>]
+     pair_style pd/contact [friction <mu>] [legacy]
      pair_coeff I J [stiffness <c_s>] [distance <d>]
    Used next to a pd/ material style with pair_style hybrid/overlay, or
    alone with explicit stiffness. Pairs of atoms that were bond partners in
@@ -33,7 +33,7 @@ using namespace LAMMPS_NS;
 
 PairPDContact::PairPDContact(LAMMPS *lmp) :
     Pair(lmp), stiffness(nullptr), distance(nullptr), cutmax_contact(0.0), material(nullptr),
-    friction(0.0), dim(3), thickness(0.0), report(0), npairs(0), maxpairs(0), pairs(nullptr)
+    friction(0.0), legacy(0), dim(3), thickness(0.0), report(0), npairs(0), maxpairs(0), pairs(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -69,9 +69,15 @@ void PairPDContact::allocate()
 void PairPDContact::settings(int narg, char **arg)
 {
   friction = 0.0;
+  legacy = 0;
   for (int iarg = 0; iarg < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "legacy") == 0) {
+      legacy = 1;
+      iarg--;
+      continue;
+    }
     if (strcmp(arg[iarg], "friction") != 0)
-      error->all(FLERR, "Pair style pd/contact: unknown keyword '{}' (friction)", arg[iarg]);
+      error->all(FLERR, "Pair style pd/contact: unknown keyword '{}' (friction, legacy)", arg[iarg]);
     if (iarg + 1 >= narg) error->all(FLERR, "Pair style pd/contact: 'friction' needs a coefficient");
     friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (!(friction >= 0.0))
@@ -122,6 +128,13 @@ void PairPDContact::init_style()
   for (int i = 0; i < atom->nlocal; i++) vmax = MAX(vmax, atom->vfrac[i]);
   MPI_Allreduce(&vmax, &v, 1, MPI_DOUBLE, MPI_MAX, world);
   cutmax_contact = 2.0 * pd_contact_radius(dim, v, thickness);
+  if (legacy) {
+    if (!material || !(material->legacy_spacing() > 0.0))
+      error->all(FLERR, "Pair pd/contact legacy needs a pd/bond or pd/ordinary in legacy mode "
+                 "(hybrid/overlay), whose lattice spacing sets the contact distance");
+    if (friction > 0.0) error->all(FLERR, "Pair pd/contact legacy has no friction (PERI has none)");
+    cutmax_contact = 1.35 * material->legacy_spacing();
+  }
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       if (!std::isnan(distance[i][j])) cutmax_contact = MAX(cutmax_contact, distance[i][j]);
@@ -163,7 +176,7 @@ void PairPDContact::filter_pairs()
     candidates += list->numneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
-      if (material) {
+      if (material && !legacy) {
         double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
         domain->minimum_image(d[0], d[1], d[2]);
         const double h = material->horizon(type[i], type[j]);
@@ -201,10 +214,21 @@ void PairPDContact::compute(int eflag, int vflag)
   pd_tally t = {};
   t.eatom = eflag_atom ? eatom : nullptr;
   pd_tally *tp = evflag ? &t : nullptr;
+  double **x0 = atom->x0;
+  const double lc = legacy ? material->legacy_spacing() : 0.0;
   for (int p = 0; p < npairs; p++) {
     const int i = pairs[2 * p], j = pairs[2 * p + 1];
     const int ti = type[i], tj = type[j];
     const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+    if (legacy) {
+      // PERI: every neighbour pair, bonded or not, at min(0.9 |xi|, 1.35 lc)
+      double d0[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+      domain->minimum_image(d0[0], d0[1], d0[2]);
+      const double dist = MIN(0.9 * sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), 1.35 * lc);
+      pd_contact_legacy_pair(material->contact_micromodulus(ti, tj), material->horizon(ti, tj), dist,
+                             vol[j], d, f[i], f[j], tp, i, j);
+      continue;
+    }
     const double dist = std::isnan(distance[ti][tj])
         ? pd_contact_radius(dim, vol[i], thickness) + pd_contact_radius(dim, vol[j], thickness)
         : distance[ti][tj];
@@ -253,10 +277,15 @@ void PairPDContact::read_restart(FILE *fp)
 void PairPDContact::write_restart_settings(FILE *fp)
 {
   fwrite(&friction, sizeof(double), 1, fp);
+  fwrite(&legacy, sizeof(int), 1, fp);
 }
 
 void PairPDContact::read_restart_settings(FILE *fp)
 {
-  if (comm->me == 0) utils::sfread(FLERR, &friction, sizeof(double), 1, fp, nullptr, error);
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &friction, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &legacy, sizeof(int), 1, fp, nullptr, error);
+  }
   MPI_Bcast(&friction, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&legacy, 1, MPI_INT, 0, world);
 }

@@ -36,6 +36,7 @@ class PairPDContact : public Pair {
   double cutmax_contact;  // the list's cutoff (largest contact distance)
   class PairPD *material; // the pd/ material style (c, horizon), if any
   double friction;        // Coulomb friction coefficient (0: none)
+  int legacy;             // reproduce peri/pmb's and peri/lps's contact
   int dim;
   double thickness;
   int report;             // log the list's size at the next build

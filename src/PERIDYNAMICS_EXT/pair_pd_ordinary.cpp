@@ -321,6 +321,8 @@ void *PairPDOrdinary::extract(const char *name, int &dim)
 // The PMB micromodulus of the same Young's modulus (the contact scale).
 double PairPDOrdinary::contact_micromodulus(int i, int j) const
 {
+  // peri/lps's short-range constant: 18 K / (pi delta^4) of the first type
+  if (legacy) return pd_pmb_micromodulus_3d(coef[BULK][i][i], horizon(i, j));
   const double E = 0.5 * (coef[YOUNG][i][i] + coef[YOUNG][j][j]);
   return pd_pmb_micromodulus(model_dim, E, horizon(i, j), thickness);
 }

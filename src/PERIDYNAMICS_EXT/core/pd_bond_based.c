@@ -58,7 +58,7 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
       /* critical stretch: the bond breaks now, before its force acts,
        * releasing the energy it stores in this configuration (so kinetic +
        * elastic + released stays consistent at this step) */
-      if (failing && !broken && s0i && s > s0i[type[j]]) {
+      if (failing && !broken && s0i && fail->law == PD_FAIL_STRETCH && s > s0i[type[j]]) {
         fail->len0[row + k] = -r0;
         nbroken++;
         released += w * (vj + vi);
@@ -84,6 +84,18 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
         }
         const double d[3] = {-dx, -dy, -dz};
         pd_tally_virial(tally, d, -tl * vi * vj);
+      }
+      /* legacy PERI: the bond breaks after its force acted */
+      if (failing && !broken && fail->law == PD_FAIL_LEGACY &&
+          pd_legacy_failure(fail, type[i] * nt + type[j], i, j, s)) {
+        fail->len0[row + k] = -r0;
+        nbroken++;
+        released += w * (vj + vi);
+        released_joule += 2.0 * w * vi * vj;
+        if (fail->released_atom) {
+          fail->released_atom[i] += w * vj;
+          fail->released_atom[j] += w * vi;
+        }
       }
     }
     f[3 * i] += fxi;

@@ -62,4 +62,34 @@ static inline int pd_contact_pair(double cs, double dist, double mu, double vi, 
   return 1;
 }
 
+/* LAMMPS PERI's contact (peri/pmb, peri/lps), reproduced for comparison:
+ * acting below d = min(0.9 |xi|, 1.35 lc), a force density of magnitude
+ * 15 c V_j (d - |Y|) / delta on both ends (V_j only: it conserves momentum
+ * only for equal volumes), energy 15 c V_j (d - |Y|)^2 / (2 delta).
+ * d[] = x_j - x_i. */
+static inline void pd_contact_legacy_pair(double c, double delta, double dist, double vj,
+                                          const double d[3], double *fi, double *fj,
+                                          pd_tally *tally, int i, int j)
+{
+  const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  if (r2 >= dist * dist) return;
+  const double len = sqrt(r2), dr = len - dist;
+  const double rk = 15.0 * c * vj * dr / delta;
+  const double tl = len > 0.0 ? rk / len : 0.0;    /* along d, as PERI's fpair */
+  for (int k = 0; k < 3; k++) {
+    fi[k] += tl * d[k];
+    fj[k] -= tl * d[k];
+  }
+  if (tally) {
+    const double e = 0.5 * rk * dr;
+    tally->energy += e;
+    if (tally->eatom) {
+      tally->eatom[i] += 0.5 * e;
+      tally->eatom[j] += 0.5 * e;
+    }
+    const double dij[3] = {-d[0], -d[1], -d[2]};
+    pd_tally_virial(tally, dij, -tl);
+  }
+}
+
 #endif

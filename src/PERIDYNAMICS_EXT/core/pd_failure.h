@@ -11,7 +11,10 @@
 #include "pd_bonds.h"
 #include "pd_influence.h"
 
-typedef enum pd_fail_law { PD_FAIL_NONE, PD_FAIL_STRETCH, PD_FAIL_ENERGY } pd_fail_law;
+/* PD_FAIL_LEGACY is LAMMPS PERI's rule: a bond breaks after its force acts
+ * when its stretch exceeds min(s0_i, s0_j) of the previous step, and each
+ * atom's s0 becomes max over its intact bonds of (s00 - alpha stretch). */
+typedef enum pd_fail_law { PD_FAIL_NONE, PD_FAIL_STRETCH, PD_FAIL_ENERGY, PD_FAIL_LEGACY } pd_fail_law;
 
 static inline int pd_bond_broken(double len0) { return len0 < 0.0; }
 
@@ -24,7 +27,24 @@ typedef struct pd_failure {
   double released;        /* added by each call: sum of energy densities released */
   double released_joule;  /* the same in joules (volume-weighted) */
   long nbroken;           /* bonds broken by each call */
+  /* legacy rule only: per type pair s00 (in s0) and alpha; per atom the s0
+   * of the previous step (owned + ghost) and the new s0 (a max over both
+   * ends, -inf where no intact bond was seen) */
+  const double *alpha;
+  const double *s0_atom;
+  double *s0_new;
 } pd_failure;
+
+/* The legacy rule for one intact bond of stretch s between i and j after
+ * its force acted: returns 1 if it breaks; updates the new s0 of both ends. */
+static inline int pd_legacy_failure(const pd_failure *f, int tij, int i, int j, double s)
+{
+  const double cand = f->s0[tij] - f->alpha[tij] * s;
+  if (cand > f->s0_new[i]) f->s0_new[i] = cand;
+  if (cand > f->s0_new[j]) f->s0_new[j] = cand;
+  const double lim = f->s0_atom[i] < f->s0_atom[j] ? f->s0_atom[i] : f->s0_atom[j];
+  return s > lim;
+}
 
 /* Energy-based failure (T14 eq. 6.1-6.3): s_c(xi) = beta omega |xi|^-2 with
  * omega the influence function normalized to integrate to d over the

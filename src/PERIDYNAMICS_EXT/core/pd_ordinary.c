@@ -131,7 +131,8 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failu
       if (failing && inactive(fail, broken, eps)) continue;
       const double aj = ab[2 * j], bj = ab[2 * j + 1];
       const double vj = vol[j];
-      if (failing && fail->law != PD_FAIL_NONE && !broken && eps > 0.0) {
+      if (failing && (fail->law == PD_FAIL_STRETCH || fail->law == PD_FAIL_ENERGY) && !broken &&
+          eps > 0.0) {
         /* instantaneous bond energy at each end, per partner volume (T14
          * eq. 6.5): s = w eps (A + B eps / 2). A bond that fails breaks now,
          * before its force acts, releasing that energy. */
@@ -166,6 +167,19 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failu
         }
         const double dij[3] = {-d[0], -d[1], -d[2]};
         pd_tally_virial(tally, dij, -tl * vi * vj);
+      }
+      /* legacy PERI: the bond breaks after its force acted */
+      if (failing && fail->law == PD_FAIL_LEGACY && !broken &&
+          pd_legacy_failure(fail, type[i] * nt + type[j], i, j, len / r0 - 1.0)) {
+        fail->len0[row + k] = -r0;
+        nbroken++;
+        const double si = w * eps * (ai + 0.5 * bi * eps), sj = w * eps * (aj + 0.5 * bj * eps);
+        released += si * vj + sj * vi;
+        released_joule += (si + sj) * vi * vj;
+        if (fail->released_atom) {
+          fail->released_atom[i] += si * vj;
+          fail->released_atom[j] += sj * vi;
+        }
       }
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
