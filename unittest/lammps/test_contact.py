@@ -97,6 +97,10 @@ check("friction removes tangential motion that frictionless contact keeps",
       slide[0.5] < 0.5 * slide[0.0], f"{slide[0.5]:.3f} vs {slide[0.0]:.3f}")
 
 bad = [("negative stiffness", "pair_style pd/contact\npair_coeff * * stiffness -1\n", "stiffness must be positive"),
+       ("negative contact distance", "pair_style pd/contact\npair_coeff * * stiffness 1e20 distance -1e-4\n",
+        "distance must be positive"),
+       ("legacy contact without a legacy material",
+        CONTACT.replace("pd/contact\n", "pd/contact legacy\n", 1) + "run 0\n", "pd/contact legacy needs"),
        ("contact alone without stiffness", "pair_style pd/contact\npair_coeff * *\nrun 0\n",
         "without a pd/ material style"),
        ("unknown keyword", "pair_style pd/contact\npair_coeff * * friction 0.3\n", "unknown keyword 'friction'"),
