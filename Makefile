@@ -44,6 +44,7 @@ bench: build
 
 # Long runs at the papers' resolutions, with their reference numbers printed
 validate: build
+	PDEXT_LMP=$(LMP) PDEXT_VALIDATE=1 python3 unittest/lammps/test_fracture.py
 	./examples/riemann-2d/run.sh $(LMP)
 	./examples/plate-impact-2d/run.sh $(LMP)
 

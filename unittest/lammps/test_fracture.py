@@ -10,6 +10,7 @@ The crack runs; the crack tip is the rightmost atom whose damage (MS07 eq.
 - Fracture energy: dissipated energy / (new crack length x thickness) is G_c
   within 10% at two resolutions (spacing 0.5 and 0.25 mm, horizon 3
   spacings). beta is calibrated on the lattice; measured: +0.7% at both.
+  The same strip as a 3D slab (periodic through 8 layers): +1.2% at 0.5 mm.
 - Energy balance: kinetic + elastic + dissipated (joules) stays within 1% of
   the initial elastic energy. A bond that fails breaks before its force acts
   and releases the energy it holds then; the missing half-kick of its force
@@ -69,10 +70,28 @@ run {steps}
 {dumps}"""
 
 
-def crack_run(h, dt, steps):
-    _, rows = run(strip(h, steps, dt), d)
+def slab(h, steps, dt):
+    """The strip as a 3D slab, periodic through 8 layers: plane strain far
+    ahead of the crack, so W = (lambda + 2 mu) eps^2 / 2 sets the strain for
+    the same G = 1.3 G_c; the pre-crack is a patch through the thickness."""
+    lam, mu = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
+    eps3 = math.sqrt(2 * 1.3 * GC / ((lam + 2 * mu) * H_STRIP))
+    lz = 8 * h
+    s = strip(h, steps, dt).replace("dimension 2\n", "").replace("fix 2d all enforce2d\n", "")
+    s = s.replace(f"lattice sq {h}", f"lattice sc {h}").replace("-0.5 0.5", "0 8")
+    s = s.replace(f"set group all volume {h * h * 1e-3}", f"set group all volume {h ** 3}")
+    s = s.replace("pair_style pd/ordinary plane stress thickness 1e-3", "pair_style pd/ordinary")
+    s = s.replace(f"segment -0.001 {H_STRIP / 2 + 0.5 * h} 0.015 {H_STRIP / 2 + 0.5 * h}",
+                  f"patch -0.001 {H_STRIP / 2 + 0.5 * h} {-3 * h} 0.016 0 0 0 0 {lz + 6 * h}")
+    s = s.replace(f"{-STRAIN * H_STRIP / 2} {STRAIN * H_STRIP / 2}", f"{-eps3 * H_STRIP / 2} {eps3 * H_STRIP / 2}")
+    return s, lz
+
+
+def crack_run(h, dt, steps, three_d=False):
+    script, thickness = slab(h, steps, dt) if three_d else (strip(h, steps, dt), 1e-3)
+    _, rows = run(script, d)
     tip0, tip = rows[0]["c_tip"], rows[-1]["c_tip"]
-    g = rows[-1]["c_frac[2]"] / ((tip - tip0) * 1e-3)
+    g = rows[-1]["c_frac[2]"] / ((tip - tip0) * thickness)
     balance = max(abs(r["v_total"] - rows[0]["v_total"]) for r in rows) / rows[0]["v_total"]
     return g, tip - tip0, balance, rows[-1]["c_frac[3]"]
 
@@ -86,6 +105,18 @@ for h, dt in [(5e-4, 2.5e-8), (2.5e-4, 1.25e-8)]:
              "lattice-calibrated beta; off-plane damage")
     if h == 5e-4:
         check_le("kinetic + elastic + dissipated conserved within 1%", balance, 0.01, "O(dt) breaking step")
+
+# 3D slab: spacing 0.5 mm in make test (140 s on one core), 0.4 mm with
+# make validate (PDEXT_VALIDATE=1). At 1 mm (horizon 3 mm, a third of the
+# half-height of the strip) it dissipates 16-20% too much: the horizon must
+# be small against the specimen, as in 2D.
+for h, dt in [(5e-4, 2.5e-8)] + ([(4e-4, 2e-8)] if os.environ.get("PDEXT_VALIDATE") else []):
+    g, grown, balance, nbroken = crack_run(h, dt, int(round(6e-5 / dt)), three_d=True)
+    print(f"3D slab, spacing {h}: crack grew {grown * 1e3:.1f} mm, {nbroken:.0f} bonds broken, "
+          f"G = {g:.1f} J/m^2, energy balance {balance:.2e}")
+    check("3D: crack grows by more than 10 horizons", grown > 10 * 3 * h)
+    check_le(f"3D slab, spacing {h}: dissipated energy per new crack area within 10% of G_c",
+             abs(g / GC - 1), 0.10, "lattice-calibrated beta")
 
 # rank count and restart: a short coarse run, atoms from one data file
 # (IDs from create_atoms depend on the rank count)
