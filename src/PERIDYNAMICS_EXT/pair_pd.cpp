@@ -154,7 +154,7 @@ std::vector<double> PairPD::parse_values(int narg, char **arg, int iarg, std::ve
   while (iarg < narg && strcmp(arg[iarg], "fail") == 0) {
     // fail stretch <s0> | fail stretch Gc <Gc> | fail energy [Gc <Gc>] |
     // fail legacy <s00> <alpha> (LAMMPS PERI's rule, legacy mode)
-    if (iarg + 1 >= narg) error->all(FLERR, "Pair {} coeff: 'fail' needs a law: stretch or energy", style);
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair {} coeff: 'fail' needs a law: stretch, energy or legacy", style);
     if (strcmp(arg[iarg + 1], "legacy") == 0) {
       if (iarg + 3 >= narg) error->all(FLERR, "Pair {} coeff: 'fail legacy' needs s00 and alpha", style);
       values[ifail] = PD_FAIL_LEGACY;
@@ -296,7 +296,7 @@ void PairPD::init_style()
     for (int j = i; j <= atom->ntypes; j++) {
       const auto l = (pd_fail_law) (int) (setflag[i][j] ? coef[ifail][i][j] : 0);
       if (l != PD_FAIL_NONE && law != PD_FAIL_NONE && l != law)
-        error->all(FLERR, "Pair {}: one failure law for all type pairs (stretch or energy)", style);
+        error->all(FLERR, "Pair {}: one failure law for all type pairs (stretch, energy or legacy)", style);
       if (l != PD_FAIL_NONE) law = l;
     }
   // minimize's line search evaluates trial states it may reject: bonds must

@@ -197,9 +197,10 @@ void PairPDContact::filter_pairs()
     MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
     if (comm->me == 0)
       utils::logmesg(lmp, "pd/contact: list cutoff {:.6g} (contact distance {:.6g} + skin): {:.2f} "
-                     "neighbours per atom, {:.2f} of them never bond partners\n",
+                     "neighbours per atom, {:.2f} of them candidates for contact{}\n",
                      cutmax_contact + neighbor->skin, cutmax_contact, 2.0 * all[0] / MAX(atom->natoms, 1),
-                     2.0 * all[1] / MAX(atom->natoms, 1));
+                     2.0 * all[1] / MAX(atom->natoms, 1),
+                     legacy ? " (legacy: all pairs)" : " (never bond partners)");
   }
 }
 
@@ -226,7 +227,7 @@ void PairPDContact::compute(int eflag, int vflag)
       domain->minimum_image(d0[0], d0[1], d0[2]);
       const double dist = MIN(0.9 * sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), 1.35 * lc);
       pd_contact_legacy_pair(material->contact_micromodulus(ti, tj), material->horizon(ti, tj), dist,
-                             vol[j], d, f[i], f[j], tp, i, j);
+                             vol[i], vol[j], d, f[i], f[j], tp, i, j);
       continue;
     }
     const double dist = std::isnan(distance[ti][tj])

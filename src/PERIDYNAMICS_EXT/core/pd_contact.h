@@ -67,7 +67,7 @@ static inline int pd_contact_pair(double cs, double dist, double mu, double vi, 
  * 15 c V_j (d - |Y|) / delta on both ends (V_j only: it conserves momentum
  * only for equal volumes), energy 15 c V_j (d - |Y|)^2 / (2 delta).
  * d[] = x_j - x_i. */
-static inline void pd_contact_legacy_pair(double c, double delta, double dist, double vj,
+static inline void pd_contact_legacy_pair(double c, double delta, double dist, double vi, double vj,
                                           const double d[3], double *fi, double *fj,
                                           pd_tally *tally, int i, int j)
 {
@@ -88,7 +88,7 @@ static inline void pd_contact_legacy_pair(double c, double delta, double dist, d
       tally->eatom[j] += 0.5 * e;
     }
     const double dij[3] = {-d[0], -d[1], -d[2]};
-    pd_tally_virial(tally, dij, -tl);
+    pd_tally_virial(tally, dij, -tl * vi);    /* PERI: fpair V_i, a true force */
   }
 }
 
