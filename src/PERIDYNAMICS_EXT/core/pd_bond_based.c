@@ -11,8 +11,8 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
          const double *restrict vol, double *restrict f, pd_tally *tally,
          const int weighted, const int tallied, const int plastic, const int failing)
 {
-  double work = 0.0, work_joule = 0.0, released = 0.0, released_joule = 0.0;
-  long nbroken = 0;
+  double work = 0.0, work_joule = 0.0;
+  pd_break_sums sums = {0.0, 0.0, 0};
   const int nt = mat->ntypes;
   for (int i = 0; i < b->nowner; i++) {
     const int n = b->count[i];
@@ -59,14 +59,7 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
        * releasing the energy it stores in this configuration (so kinetic +
        * elastic + released stays consistent at this step) */
       if (failing && !broken && s0i && fail->law == PD_FAIL_STRETCH && s > s0i[type[j]]) {
-        fail->len0[row + k] = -r0;
-        nbroken++;
-        released += w * (vj + vi);
-        released_joule += 2.0 * w * vi * vj;
-        if (fail->released_atom) {
-          fail->released_atom[i] += w * vj;
-          fail->released_atom[j] += w * vi;
-        }
+        pd_break_bond(fail, &sums, row + k, r0, i, j, w, w, vi, vj);
         continue;
       }
       const double tl = len > 0.0 ? t / len : 0.0;
@@ -87,16 +80,8 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
       }
       /* legacy PERI: the bond breaks after its force acted */
       if (failing && !broken && fail->law == PD_FAIL_LEGACY &&
-          pd_legacy_failure(fail, type[i] * nt + type[j], i, j, s)) {
-        fail->len0[row + k] = -r0;
-        nbroken++;
-        released += w * (vj + vi);
-        released_joule += 2.0 * w * vi * vj;
-        if (fail->released_atom) {
-          fail->released_atom[i] += w * vj;
-          fail->released_atom[j] += w * vi;
-        }
-      }
+          pd_legacy_failure(fail, type[i] * nt + type[j], i, j, s))
+        pd_break_bond(fail, &sums, row + k, r0, i, j, w, w, vi, vj);
     }
     f[3 * i] += fxi;
     f[3 * i + 1] += fyi;
@@ -106,11 +91,7 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
     mp->dissipated += work;
     mp->dissipated_joule += work_joule;
   }
-  if (failing) {
-    fail->released += released;
-    fail->released_joule += released_joule;
-    fail->nbroken += nbroken;
-  }
+  if (failing) pd_add_break_sums(fail, &sums);
 }
 
 #define PMB_VARIANTS(mp, fail, plastic, failing)                                              \

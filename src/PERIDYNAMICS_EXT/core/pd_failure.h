@@ -35,6 +35,34 @@ typedef struct pd_failure {
   double *s0_new;
 } pd_failure;
 
+/* Sums a kernel keeps while it breaks bonds, added to the pd_failure at the end. */
+typedef struct pd_break_sums {
+  double released, released_joule;
+  long nbroken;
+} pd_break_sums;
+
+/* Break bond idx between i and j: flip the sign of its length and book the
+ * energy it releases, ei at i and ej at j per unit volume of the partner. */
+static inline void pd_break_bond(pd_failure *f, pd_break_sums *sums, int idx, double r0, int i,
+                                 int j, double ei, double ej, double vi, double vj)
+{
+  f->len0[idx] = -r0;
+  sums->nbroken++;
+  sums->released += ei * vj + ej * vi;
+  sums->released_joule += (ei + ej) * vi * vj;
+  if (f->released_atom) {
+    f->released_atom[i] += ei * vj;
+    f->released_atom[j] += ej * vi;
+  }
+}
+
+static inline void pd_add_break_sums(pd_failure *f, const pd_break_sums *sums)
+{
+  f->released += sums->released;
+  f->released_joule += sums->released_joule;
+  f->nbroken += sums->nbroken;
+}
+
 /* The legacy rule for one intact bond of stretch s between i and j after
  * its force acted: returns 1 if it breaks; updates the new s0 of both ends. */
 static inline int pd_legacy_failure(const pd_failure *f, int tij, int i, int j, double s)

@@ -107,8 +107,7 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failu
   const double *restrict ab = st->ab;
   const double m = st->order;
   const int nt = st->ntypes;
-  double released = 0.0, released_joule = 0.0;
-  long nbroken = 0;
+  pd_break_sums sums = {0.0, 0.0, 0};
   for (int i = 0; i < b->nowner; i++) {
     const int n = b->count[i];
     if (!n) continue;
@@ -141,14 +140,7 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failu
             ? len / r0 - 1.0 > s0i[type[j]]
             : (si + sj) * r0 * r0 >= w * (st->crit[i] + st->crit[j]);
         if (breaks) {
-          fail->len0[row + k] = -r0;
-          nbroken++;
-          released += si * vj + sj * vi;
-          released_joule += (si + sj) * vi * vj;
-          if (fail->released_atom) {
-            fail->released_atom[i] += si * vj;
-            fail->released_atom[j] += sj * vi;
-          }
+          pd_break_bond(fail, &sums, row + k, r0, i, j, si, sj, vi, vj);
           continue;
         }
       }
@@ -171,24 +163,13 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failu
       /* legacy PERI: the bond breaks after its force acted */
       if (failing && fail->law == PD_FAIL_LEGACY && !broken &&
           pd_legacy_failure(fail, type[i] * nt + type[j], i, j, len / r0 - 1.0)) {
-        fail->len0[row + k] = -r0;
-        nbroken++;
         const double si = w * eps * (ai + 0.5 * bi * eps), sj = w * eps * (aj + 0.5 * bj * eps);
-        released += si * vj + sj * vi;
-        released_joule += (si + sj) * vi * vj;
-        if (fail->released_atom) {
-          fail->released_atom[i] += si * vj;
-          fail->released_atom[j] += sj * vi;
-        }
+        pd_break_bond(fail, &sums, row + k, r0, i, j, si, sj, vi, vj);
       }
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
   }
-  if (failing) {
-    fail->released += released;
-    fail->released_joule += released_joule;
-    fail->nbroken += nbroken;
-  }
+  if (failing) pd_add_break_sums(fail, &sums);
 }
 
 #define FORCE_VARIANT(kind, tallied, cached, failing) \
