@@ -18,9 +18,9 @@
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
-#include "neigh_request.h"
 #include "neighbor.h"
 #include "pair_pd.h"
+#include "pd_compat.h"
 
 #include <cmath>
 #include <cstring>
@@ -144,9 +144,7 @@ void PairPDContact::init_style()
     }
 
   // a half list of its own, with its own short cutoff: not the horizon
-  const int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->cut = 1;
-  neighbor->requests[irequest]->cutoff = cutmax_contact + neighbor->skin;
+  PDCompat::request_pair_with_cutoff(neighbor, this, instance_me, cutmax_contact + neighbor->skin);
   report = 1;
 }
 

@@ -26,6 +26,14 @@ namespace PDCompat {
     neighbor->requests[irequest]->occasional = 1;
   }
 
+  /* A half list for a pair style, built with its own cutoff. */
+  inline void request_pair_with_cutoff(Neighbor *neighbor, class Pair *pair, int instance, double cutoff)
+  {
+    int irequest = neighbor->request(pair, instance);
+    neighbor->requests[irequest]->cut = 1;
+    neighbor->requests[irequest]->cutoff = cutoff;
+  }
+
 }    // namespace PDCompat
 }    // namespace LAMMPS_NS
 
