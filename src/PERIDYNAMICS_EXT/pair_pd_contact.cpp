@@ -21,6 +21,7 @@
 #include "neighbor.h"
 #include "pair_pd.h"
 #include "pd_compat.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -191,6 +192,7 @@ void PairPDContact::filter_pairs()
   }
   if (report) {
     report = 0;
+    report_stable_dt();
     bigint mine[2] = {candidates, npairs}, all[2];
     MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
     if (comm->me == 0)
@@ -200,6 +202,37 @@ void PairPDContact::filter_pairs()
                      2.0 * all[1] / MAX(atom->natoms, 1),
                      legacy ? " (legacy: all pairs)" : " (never bond partners)");
   }
+}
+
+// The contact springs have their own stable step, which the material's
+// estimate does not include: a particle pressed by its 2d nearest
+// neighbours (d = dimension) at the contact distance, linearized,
+// dt = sqrt(2 rho dist / (2d c_s V)), the smallest over the atoms.
+void PairPDContact::report_stable_dt()
+{
+  double mine = INFINITY;
+  const int *type = atom->type;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int ti = type[i];
+    for (int tj = 1; tj <= atom->ntypes; tj++) {
+      const double dist = legacy ? 0.9 * 2.0 * pd_contact_radius(dim, atom->vfrac[i], thickness)
+          : (std::isnan(distance[ti][tj]) ? 2.0 * pd_contact_radius(dim, atom->vfrac[i], thickness)
+                                          : distance[ti][tj]);
+      const double cs = legacy ? 15.0 * material->contact_micromodulus(ti, tj) * dist /
+                                     material->horizon(ti, tj)
+                               : stiffness[ti][tj];
+      const double dt = sqrt(2.0 * atom->rmass[i] * dist / (2.0 * dim * cs * atom->vfrac[i]));
+      mine = MIN(mine, dt);
+    }
+  }
+  double dt;
+  MPI_Allreduce(&mine, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "pd/contact: stable time step estimate of the contact springs {:.6g}, "
+                   "timestep {:.6g} is {:.3f} of it\n", dt, update->dt, update->dt / dt);
+  if (update->dt > dt)
+    error->warning(FLERR, "Pair pd/contact: timestep {} exceeds the contact springs' stable "
+                   "estimate {}", update->dt, dt);
 }
 
 void PairPDContact::compute(int eflag, int vflag)

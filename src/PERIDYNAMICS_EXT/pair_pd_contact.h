@@ -47,6 +47,7 @@ class PairPDContact : public Pair {
 
   void allocate();
   void filter_pairs();
+  void report_stable_dt();
 };
 
 }    // namespace LAMMPS_NS
