@@ -35,8 +35,7 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
       const double dx = x[3 * j] - xi, dy = x[3 * j + 1] - yi, dz = x[3 * j + 2] - zi;
       const double len = sqrt(dx * dx + dy * dy + dz * dz);
       double s = (len - r0) / r0;
-      /* a broken bond acts only while compressed, and only with recontact */
-      if (failing && broken && (s >= 0.0 || !fail->recontact)) continue;
+      if (failing && pd_bond_inactive(fail, broken, s)) continue;
       const double c = ci[type[j]];
       if (plastic) {
         /* return map: the elastic stretch s - sp stays within [-sy, sy] */

@@ -35,6 +35,13 @@ typedef struct pd_failure {
   double *s0_new;
 } pd_failure;
 
+/* A broken bond acts only while compressed (strain < 0), and only with
+ * recontact. */
+static inline int pd_bond_inactive(const pd_failure *f, int broken, double strain)
+{
+  return broken && (strain >= 0.0 || !f->recontact);
+}
+
 /* Sums a kernel keeps while it breaks bonds, added to the pd_failure at the end. */
 typedef struct pd_break_sums {
   double released, released_joule;

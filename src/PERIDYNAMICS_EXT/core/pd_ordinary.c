@@ -44,13 +44,6 @@ static inline double bond_length(const double *restrict x, int i, int j, double 
   return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
-/* A broken bond counts only while compressed, and only with recontact. */
-static inline __attribute__((always_inline)) int
-inactive(const pd_failure *fail, int broken, double eps)
-{
-  return broken && (eps >= 0.0 || !fail->recontact);
-}
-
 static inline __attribute__((always_inline)) void
 dilatation_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
                 const pd_failure *fail, const double *restrict x, const double *restrict vol,
@@ -68,7 +61,7 @@ dilatation_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
       const double r0s = b->len0[row + k];
       const double eps = bond_strain(kind, st->order, len, failing ? fabs(r0s) : r0s);
       if (cached) st->strain[row + k] = eps;
-      if (failing && inactive(fail, pd_bond_broken(r0s), eps)) continue;
+      if (failing && pd_bond_inactive(fail, pd_bond_broken(r0s), eps)) continue;
       const double we = bond_weight(b, row + k) * eps;
       si += we * vol[j];
       sum[j] += we * vol[i];
@@ -127,7 +120,7 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failu
       const double len = bond_length(x, i, j, d);
       const double w = bond_weight(b, row + k);
       const double eps = cached ? st->strain[row + k] : bond_strain(kind, m, len, r0);
-      if (failing && inactive(fail, broken, eps)) continue;
+      if (failing && pd_bond_inactive(fail, broken, eps)) continue;
       const double aj = ab[2 * j], bj = ab[2 * j + 1];
       const double vj = vol[j];
       if (failing && (fail->law == PD_FAIL_STRETCH || fail->law == PD_FAIL_ENERGY) && !broken &&
