@@ -155,8 +155,14 @@ double PairPDContact::init_one(int i, int j)
     stiffness[i][j] = 0.5 * (stiffness[i][i] + stiffness[j][j]);
     distance[i][j] = 0.5 * (distance[i][i] + distance[j][j]);
   }
-  // default stiffness: 15 times the material's micromodulus (MS07)
-  if (std::isnan(stiffness[i][j]) && material) stiffness[i][j] = 15.0 * material->contact_micromodulus(i, j);
+  // default stiffness: 15 times the material's micromodulus (MS07). Two
+  // types take the harmonic mean of their own values: the softer body sets
+  // it, as in two springs in series. Not a value from the interface's
+  // horizon, which is often set below the spacing to keep bodies unbonded.
+  if (std::isnan(stiffness[i][j]) && material) {
+    const double ci = material->contact_micromodulus(i, i), cj = material->contact_micromodulus(j, j);
+    stiffness[i][j] = 15.0 * 2.0 * ci * cj / (ci + cj);
+  }
   stiffness[j][i] = stiffness[i][j];
   distance[j][i] = distance[i][j];
   return cutmax_contact;
