@@ -207,6 +207,12 @@ void PairPDContact::filter_pairs()
                      cutmax_contact + neighbor->skin, cutmax_contact, 2.0 * all[0] / MAX(atom->natoms, 1),
                      2.0 * all[1] / MAX(atom->natoms, 1),
                      legacy ? " (legacy: all pairs)" : " (never bond partners)");
+    if (comm->me == 0 && !legacy) {
+      std::string line = "pd/contact: stiffness c_s";
+      for (int i = 1; i <= atom->ntypes; i++)
+        for (int j = i; j <= atom->ntypes; j++) line += fmt::format(" {}-{} {:.6g}", i, j, stiffness[i][j]);
+      utils::logmesg(lmp, line + "\n");
+    }
   }
 }
 

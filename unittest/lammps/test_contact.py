@@ -8,6 +8,7 @@ conserves kinetic + elastic energy within 1% (velocity Verlet at 0.15 of
 the stable step; the contact spring is 15 c), and the facing surfaces never
 come closer than 90% of the contact distance. Without pd/contact the same
 blocks pass through each other, so the test can fail. 1 and 2 ranks agree."""
+import math
 from lmptest import *
 
 d = workdir()
@@ -109,4 +110,21 @@ bad = [("negative stiffness", "pair_style pd/contact\npair_coeff * * stiffness -
 for what, pairs, message in bad:
     out, _ = run(blocks(pairs, steps=0).split("velocity a")[0] + pairs, d, expect_error=True)
     check(f"bad input, {what}: ERROR names it", message in out)
+# Default stiffness of unlike types: 15 times each type's PMB-equivalent
+# micromodulus (3D: 12 E / (pi delta^4)), and their harmonic mean for the
+# pair, whatever the pair's own horizon (here below the spacing, so the
+# bodies share no bonds: the value from that horizon would be 10^4 times
+# stiffer).
+UNLIKE = (f"pair_style hybrid/overlay pd/ordinary pd/contact\n"
+          f"pair_coeff * * pd/ordinary E 3.5e9 nu 0.25 horizon {HORIZON}\n"
+          f"pair_coeff 2 2 pd/ordinary E 70e9 nu 0.25 horizon {HORIZON}\n"
+          f"pair_coeff 1 2 pd/ordinary horizon {0.5 * SPACING}\npair_coeff * * pd/contact\n")
+out, _ = run(blocks(UNLIKE, steps=0), d)
+c11, c12, c22 = (log_value(out, rf"stiffness c_s.* {p} ([0-9.e+]+)") for p in ("1-1", "1-2", "2-2"))
+expected = [15 * 12 * e / (math.pi * HORIZON ** 4) for e in (3.5e9, 70e9)]
+check_le("default stiffness of a type: 15 x 12 E / (pi delta^4)",
+         max(abs(c11 / expected[0] - 1), abs(c22 / expected[1] - 1)), 1e-5, "6 digits in the log")
+check_le("unlike types: the harmonic mean of their own values", abs(c12 / (2 * c11 * c22 / (c11 + c22)) - 1), 1e-5,
+         "the softer body sets it; not from the pair's horizon")
+
 finish()
