@@ -25,6 +25,9 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+// Tag of the global restart record: bump it whenever the layout of the
+// record or of the per-atom restart data changes.
+static constexpr double RESTART_FORMAT = 20261122.1;
 static constexpr int PER_ATOM_FIXED = 5;    // count, own tag, family and weighted volume, dissipated
 
 // Which end stores a bond: the smaller tag when the tags' sum is even, the
@@ -469,18 +472,21 @@ void FixPDBonds::write_restart(FILE *fp)
   bigint total_broken = 0;
   MPI_Allreduce(&nbroken_local, &total_broken, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (comm->me == 0) {
-    double list[10] = {(double) built, (double) maxpartner, (double) use_weights, total_lost,
+    double list[11] = {RESTART_FORMAT, (double) built, (double) maxpartner, (double) use_weights, total_lost,
                        (double) nhistory, sums[0], family_key, sums[1], (double) total_broken,
                        (double) any_broken};
     int size = sizeof(list);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 10, fp);
+    fwrite(list, sizeof(double), 11, fp);
   }
 }
 
 void FixPDBonds::restart(char *buf)
 {
-  double *list = (double *) buf;
+  if (((double *) buf)[0] != RESTART_FORMAT)
+    error->all(FLERR, "Fix pd/bonds: the restart file's bonds are in another format than this build "
+               "reads (format {}; written by an older or newer PERIDYNAMICS_EXT)", RESTART_FORMAT);
+  double *list = (double *) buf + 1;
   if ((int) list[2] != use_weights)
     error->all(FLERR, "Fix pd/bonds: restart file bonds {} weights, the pair style now {}",
                list[2] ? "carry" : "carry no", use_weights ? "needs them" : "does not");

@@ -2,10 +2,11 @@
    PERIDYNAMICS_EXT: fix pd/precrack.
      fix ID all pd/precrack segment x1 y1 x2 y2                 (2D)
      fix ID all pd/precrack patch ox oy oz ax ay az bx by bz    (3D)
-   Breaks every bond whose reference segment (x0 to x0') crosses the crack,
-   at the start of every run (idempotent: a broken bond stays broken, and
-   restart files keep the broken state). Bonds cut this way release no
-   energy: the body is assumed undeformed there, as when a notch is cut.
+   Breaks every bond of the group (both ends in it) whose reference segment
+   (x0 to x0') crosses the crack, at the start of every run (idempotent: a
+   broken bond stays broken, and restart files keep the broken state).
+   Bonds cut this way release no energy: the body is assumed undeformed
+   there, as when a notch is cut.
 ------------------------------------------------------------------------- */
 
 #include "fix_pd_precrack.h"
@@ -76,6 +77,7 @@ void FixPDPrecrack::init()
 void FixPDPrecrack::setup_pre_force(int)
 {
   double **x0 = atom->x0;
+  const int *mask = atom->mask;
   const pd_bond_view v = bonds->view();
   double *len0 = bonds->len0_data();
   bigint mine = 0;
@@ -84,6 +86,7 @@ void FixPDPrecrack::setup_pre_force(int)
       const int idx = i * v.stride + k;
       if (len0[idx] < 0.0) continue;
       const int j = v.far[idx];
+      if (!(mask[i] & groupbit) || !(mask[j] & groupbit)) continue;   // both ends in the group
       double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
       domain->minimum_image(d[0], d[1], d[2]);
       const double p[3] = {x0[i][0], x0[i][1], x0[i][2]};

@@ -143,6 +143,14 @@ void PairPD::coeff(int narg, char **arg)
   int iarg = 2;
   if (iarg < narg && parse_model(arg[iarg])) iarg++;
   const std::vector<double> values = parse_values(narg, arg, iarg, std::vector<double>(names.size(), NAN));
+  // a line that sets no type's own pair (I I) must not carry a type's
+  // material: it would be silently unused
+  if (ihi < jlo || jhi < ilo)
+    for (size_t p = 0; p < names.size(); p++)
+      if (!std::isnan(values[p]) && !between_types(p))
+        error->all(FLERR, "Pair {} coeff {} {}: '{}' belongs on a type's own line (I I); a line between "
+                   "two types sets only the horizon and failure of their bonds", style_name(), arg[0], arg[1],
+                   names[p]);
   if (set_coeff_pairs(ilo, ihi, jlo, jhi, values) == 0)
     error->all(FLERR, "Incorrect args for pair coefficients");
 }

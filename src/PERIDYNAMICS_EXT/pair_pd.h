@@ -72,6 +72,7 @@ class PairPD : public Pair {
   virtual int uses_weights() const { return legacy; }
   virtual int history_per_bond() const { return 0; }
   virtual bool from_file(const std::string &) const { return true; }  // take this key from files
+  virtual bool between_types(int) const { return true; }           // key allowed on an I J line, I != J
   virtual std::string family_settings() const { return ""; }         // what else shapes the bonds
   virtual void setup_run() {}                                   // first compute of a run
   virtual void stable_dt_sum(double *sum) = 0;    // add stiffness sums over nall

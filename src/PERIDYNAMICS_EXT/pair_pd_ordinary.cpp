@@ -84,6 +84,11 @@ std::string PairPDOrdinary::family_settings() const
 
 // Each atom's force state uses its own type's material (pair_coeff I I); an
 // I J line with I != J sets only the horizon of the bonds between the types.
+bool PairPDOrdinary::between_types(int p) const
+{
+  return p == HORIZON || p == ifail || p == is0 || p == iGc || p == ialpha;
+}
+
 void PairPDOrdinary::check_coeff(int i, int j)
 {
   if (!given(HORIZON, i, j) || value(HORIZON, i, j) <= 0.0)

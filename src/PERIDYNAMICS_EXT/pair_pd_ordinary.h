@@ -46,6 +46,7 @@ class PairPDOrdinary : public PairPD {
 
   int parse_setting(int, char **, int) override;
   void check_coeff(int, int) override;
+  bool between_types(int) const override;
   int uses_weights() const override { return 1; }
   void stable_dt_sum(double *) override;
   void report_extra() override;

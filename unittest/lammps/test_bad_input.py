@@ -77,6 +77,11 @@ cases = [
      "unknown influence function 'cubic'"),
     ("nu at 1/2", block(6) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.5 horizon {H}\n",
      "are not an isotropic elastic material"),
+    ("pd/ordinary material on a line between types",
+     "units si\nboundary s s s\natom_style peri\natom_modify map array\nlattice sc 5e-4\n"
+     "region b block 0 4 0 4 0 4\ncreate_box 2 b\ncreate_atoms 1 box\n"
+     f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.3 horizon {H}\npair_coeff 1 2 E 7e10 horizon {H}\n",
+     "'E' belongs on a type's own line"),
     ("nu at -1", block(6) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu -1 horizon {H}\n",
      "are not an isotropic elastic material"),
     ("K and E together", block(6) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 K 1e9 G 1e9 horizon {H}\n",

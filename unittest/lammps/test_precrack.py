@@ -42,6 +42,14 @@ thermo_modify format float %.15g
 run 0
 """, d)
 check_le("the cut survives a restart", abs(rows[-1]["c_dsum"] - 2 * expected / 122), 1e-9)
+# The group: only bonds with both ends in it are cut. Half the block
+# (columns x < 5 spacings, periodic in x) keeps the bonds that cross the
+# patch from or to the other half.
+half = 10 * sum(v[2] * sum(1 for ix in range(5) if (ix + v[0]) % 10 < 5) for v in family if v[2] > 0)
+out, rows = run(block(10) + PAIRS["pd/ordinary"] + f"region half block INF {4.5 * h} INF INF INF INF units box\n"
+                "group half region half\n" + PATCH.replace("fix cut all", "fix cut half")
+                + "thermo_style custom step f_cut\nrun 0\n", d)
+check(f"a group cuts only its own bonds ({half} of {expected})", rows[-1]["f_cut"] == half, f"{rows[-1]['f_cut']:.0f}")
 out, _ = run(block(10) + PAIRS["pd/ordinary"] + "fix cut all pd/precrack patch 1 1 1 0.1 0 0 0 0.1 0\n", d,
              expect_error=True)
 check("a crack outside the box is an ERROR", "the crack lies outside the simulation box" in out)

@@ -3,6 +3,7 @@
 bitwise the same positions on the same rank count. No lattice command and
 no pair_style after the restart: the pair style, its coefficients, the
 families and (legacy) the lattice spacing all come from the file."""
+import struct
 from lmptest import *
 
 d = workdir()
@@ -20,4 +21,12 @@ for style in ["pd/bond legacy", "pd/ordinary", "pd/ordinary 2D m=0"]:
     check(f"{style}: no families rebuilt after read_restart", "pd/bonds:" not in out)
     diff = max_rel_diff(read_dump(f"{d}/one.{tag}"), read_dump(f"{d}/two.{tag}"))
     check(f"{style}: restarted run ends at bitwise the same positions", diff == 0.0, f"max rel diff {diff:.3g}")
+# A restart file whose bond record has another format tag (as one written
+# by an older or newer build) is refused by name, not misread.
+magic = struct.pack("<d", 20261122.1)
+raw = open(f"{d}/restart.{tag}", "rb").read()
+check("the bond record carries its format tag once", raw.count(magic) == 1)
+open(f"{d}/restart.old", "wb").write(raw.replace(magic, struct.pack("<d", 20250101.0)))
+out, _ = run("read_restart restart.old\nrun 0\n", d, expect_error=True)
+check("another format is an ERROR that says so", "in another format than this build reads" in out)
 finish()
