@@ -27,7 +27,7 @@ using namespace FixConst;
 
 // Tag of the global restart record: bump it whenever the layout of the
 // record or of the per-atom restart data changes.
-static constexpr double RESTART_FORMAT = 20261122.1;
+static constexpr double RESTART_FORMAT = 20261122.2;
 static constexpr int PER_ATOM_FIXED = 5;    // count, own tag, family and weighted volume, dissipated
 
 // Which end stores a bond: the smaller tag when the tags' sum is even, the
@@ -43,7 +43,7 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), dissipated_atom(nullptr), owner(nullptr), built_tag(nullptr),
     use_weights(0), nhistory(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
     r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), nlost_reported(0), dissipated(0.0), dissipated_joule(0.0), nbroken_local(0), any_broken(0),
-    family_key(0.0), list(nullptr),
+    family_key(0.0), fresh_step(-1), list(nullptr),
     comm_array(nullptr), comm_width(1), comm_max(0)
 {
   if (narg != 6 || strcmp(arg[4], "history") != 0)
@@ -472,12 +472,16 @@ void FixPDBonds::write_restart(FILE *fp)
   bigint total_broken = 0;
   MPI_Allreduce(&nbroken_local, &total_broken, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (comm->me == 0) {
-    double list[11] = {RESTART_FORMAT, (double) built, (double) maxpartner, (double) use_weights, total_lost,
-                       (double) nhistory, sums[0], family_key, sums[1], (double) total_broken,
-                       (double) any_broken};
-    int size = sizeof(list);
+    // the record, then the bonds broken at the last evaluation (every rank
+    // has them all) with its step, so that a restart replays that step
+    std::vector<double> list = {RESTART_FORMAT, (double) built, (double) maxpartner, (double) use_weights,
+                                total_lost, (double) nhistory, sums[0], family_key, sums[1],
+                                (double) total_broken, (double) any_broken, (double) fresh_step,
+                                (double) fresh_pairs.size()};
+    for (tagint t : fresh_pairs) list.push_back((double) t);
+    int size = list.size() * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 11, fp);
+    fwrite(list.data(), sizeof(double), list.size(), fp);
   }
 }
 
@@ -502,6 +506,9 @@ void FixPDBonds::restart(char *buf)
   dissipated_joule = comm->me == 0 ? list[7] : 0.0;
   nbroken_local = comm->me == 0 ? (bigint) list[8] : 0;
   any_broken = (int) list[9];
+  fresh_step = (bigint) list[10];
+  fresh_pairs.resize((size_t) list[11]);
+  for (size_t p = 0; p < fresh_pairs.size(); p++) fresh_pairs[p] = (tagint) list[12 + p];
 }
 
 // New row length of the per-atom bond tables (their contents are dropped:
@@ -545,4 +552,47 @@ int FixPDBonds::per_atom_max() const
 int FixPDBonds::maxsize_restart()
 {
   return per_atom_max() + 1;
+}
+
+bool FixPDBonds::unbreak_fresh(bigint step)
+{
+  if (step != fresh_step || fresh_pairs.empty()) return false;
+  sign_fresh(1.0);
+  return true;
+}
+
+void FixPDBonds::rebreak_fresh()
+{
+  sign_fresh(-1.0);
+}
+
+// Set the sign of the listed bonds' reference lengths (on their owners).
+void FixPDBonds::sign_fresh(double sign)
+{
+  for (size_t p = 0; p < fresh_pairs.size(); p += 2) {
+    const int i = atom->map(fresh_pairs[p]);
+    if (i < 0 || i >= atom->nlocal) continue;
+    for (int k = 0; k < npartner[i]; k++)
+      if (partner[i][k] == fresh_pairs[p + 1]) r0[i][k] = sign * fabs(r0[i][k]);
+  }
+}
+
+void FixPDBonds::note_fresh(const int *idx, int n, bigint step, bool any)
+{
+  fresh_step = step;
+  fresh_pairs.clear();
+  if (!any) return;
+  std::vector<tagint> mine(2 * (size_t) n);
+  for (int q = 0; q < n; q++) {
+    const int i = idx[q] / maxpartner, k = idx[q] % maxpartner;
+    mine[2 * q] = atom->tag[i];
+    mine[2 * q + 1] = partner[i][k];
+  }
+  int count = 2 * n;
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int r = 1; r < comm->nprocs; r++) displs[r] = displs[r - 1] + counts[r - 1];
+  fresh_pairs.resize(displs.back() + counts.back());
+  MPI_Allgatherv(mine.data(), count, MPI_LMP_TAGINT, fresh_pairs.data(), counts.data(), displs.data(),
+                 MPI_LMP_TAGINT, world);
 }

@@ -15,6 +15,8 @@ FixStyle(pd/bonds,FixPDBonds);
 
 extern "C" {
 #include "pd_bonds.h"
+
+#include <vector>
 }
 
 namespace LAMMPS_NS {
@@ -79,6 +81,15 @@ class FixPDBonds : public Fix {
   void set_has_broken() { any_broken = 1; }
   // per-atom dissipated energy density (owned atoms; migrates, restarts)
   double *dissipated_atom;
+  // The bonds that broke at the last force evaluation, so that a second
+  // evaluation of that step (the setup of a next run, or after a restart)
+  // applies the same forces: unbreak_fresh() makes them intact again for it
+  // (true if it is such a replay), rebreak_fresh() breaks them after it,
+  // note_fresh() records a new step's breaks (len0 indices; all ranks call
+  // it with the same 'any': whether some rank broke a bond).
+  bool unbreak_fresh(bigint step);
+  void rebreak_fresh();
+  void note_fresh(const int *idx, int n, bigint step, bool any);
 
   // Sum a per-atom array's ghost entries onto their owners, or copy the
   // owners' entries to their ghosts; 'width' doubles per atom, at most 2.
@@ -111,12 +122,15 @@ class FixPDBonds : public Fix {
   bigint nbroken_local;    // bonds broken on this rank (fracture, not pre-cracks)
   int any_broken;          // some bond anywhere is broken (pre-crack or fracture)
   double family_key;       // hash of the pair settings the families were built for
+  bigint fresh_step;       // the step of the last evaluation that broke bonds (or broke none)
+  std::vector<tagint> fresh_pairs;   // its broken bonds, owner and partner tags, all ranks
   class NeighList *list;
   double *comm_array;
   int comm_width;
   int comm_max;            // reverse comm takes the max instead of the sum
 
   void build_families();
+  void sign_fresh(double sign);
   void map_partners(bool setup);
   void check_identities();
   void reference_sums();

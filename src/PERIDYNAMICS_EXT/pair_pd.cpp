@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cfloat>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 
 extern "C" {
@@ -33,7 +34,7 @@ static const char *const FIX_ID = "PD_BONDS";
 PairPD::PairPD(LAMMPS *lmp, const std::vector<std::string> &coef_names) :
     Pair(lmp), names(coef_names), coef(nullptr), legacy(0), recontact(1), law(PD_FAIL_NONE),
     ifail(-1), is0(-1), iGc(-1), ialpha(-1), model_dim(PD_3D), thickness(0.0), lattice_spacing(0.0),
-    bonds(nullptr), released(nullptr), s0_new(nullptr), nreleased(0),
+    bonds(nullptr), released(nullptr), fresh(nullptr), maxfresh(0), s0_new(nullptr), nreleased(0),
     report_pending(0), work(nullptr), nwork(0)
 {
   names.insert(names.end(), {"fail", "s0", "Gc", "alpha"});
@@ -57,6 +58,7 @@ PairPD::~PairPD()
   }
   memory->destroy(work);
   memory->destroy(released);
+  free(fresh);
   memory->destroy(s0_new);
 }
 
@@ -471,6 +473,11 @@ pd_failure PairPD::failure_state()
   }
   f.len0 = bonds->len0_data();
   f.released_atom = released;
+  f.fresh = fresh;
+  f.maxfresh = maxfresh;
+  // a second evaluation of the step in which bonds last broke: they act
+  // with half their force again, as the first time (see pd_ordinary.c)
+  f.replay = law != PD_FAIL_LEGACY && bonds->unbreak_fresh(update->ntimestep);
   return f;
 }
 
@@ -484,8 +491,15 @@ void PairPD::account_failure(const pd_failure &f)
     bonds->max_to_owners(s0_new);
     for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = std::isinf(s0_new[i]) ? DBL_MAX : s0_new[i];
   }
+  fresh = f.fresh;    // the core may have grown it
+  maxfresh = f.maxfresh;
+  if (f.replay) {
+    bonds->rebreak_fresh();   // also those that did not break again (moved atoms)
+    return;
+  }
   int mine = f.nbroken > 0, any;
   MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  if (law != PD_FAIL_LEGACY) bonds->note_fresh(f.fresh, f.nfresh, update->ntimestep, any);
   if (!any) return;
   bonds->set_has_broken();
   bonds->add_broken(f.nbroken);

@@ -96,6 +96,8 @@ class PairPD : public Pair {
   pd_failure failure_state();
   void account_failure(const pd_failure &f);
   double *released;         // per-atom released energy of one step (owned + ghost)
+  int *fresh;               // len0 indices of the bonds one evaluation broke (malloc'd by the core)
+  int maxfresh;
   double *s0_new;           // legacy failure: the new per-atom s0 (owned + ghost)
   int nreleased;
 };

@@ -16,11 +16,10 @@ the horizon spans NH spacings instead of the example's 5.5, for 360 us.
   notch tip over the extension times the thickness): G_c within -10% and
   +30%. Cutting a straight crack costs G_c and the tip is located to within
   a spacing; a running crack costs more where it wanders by a spacing or
-  two (measured: +6% here, +10% in the example at 5.5 spacings; T14 Table
+  two (measured: +8% here, +10% in the example at 5.5 spacings; T14 Table
   6.1: 400-420 J/m^2 once resolved, 620 at its coarsest).
 - Energy: kinetic + elastic + contact + dissipated stays within 1% of the
-  impactor's kinetic energy (failure energy accounting is first order in
-  dt; the deck runs at 0.2 of the stable step)."""
+  impactor's kinetic energy (the deck runs at 0.2 of the stable step)."""
 import os
 import re
 from lmptest import *

@@ -12,11 +12,13 @@ The crack runs; the crack tip is the rightmost atom whose damage (MS07 eq.
   spacings). beta is calibrated on the lattice; measured: +0.7% at both.
   The same strip as a 3D slab (periodic through 8 layers): +1.2% at 0.5 mm.
 - Energy balance: kinetic + elastic + dissipated (joules) stays within 1% of
-  the initial elastic energy. A bond that fails breaks before its force acts
-  and releases the energy it holds then; the missing half-kick of its force
-  leaves an error of first order in dt (measured: 2.7%, 1.05%, 0.52% at dt =
-  0.35, 0.18, 0.09 of the stable step), so the runs use 0.09 and the check
-  is made on the coarse run (the fine run's crack grows twice as far: 1.1%).
+  the initial elastic energy (measured 0.02-0.04%). A bond that fails
+  releases the energy it holds at that step and acts there with half its
+  force, so that the two half-kicks around the step carry it up to that
+  step: the balance is second order in dt. The bond-based strip (critical
+  stretch) shows the order: 3.5e-4, 9.1e-5, 2.5e-5 at dt = 0.35, 0.18, 0.09
+  of the stable step (a bond dropped whole, as before: 8.4e-3, 4.4e-3,
+  2.3e-3, first order); the check asks for a ratio above 3 per halving.
 - 1 and 2 ranks break the same bonds; a run split by a restart continues
   with the same broken bonds, dissipated energy and positions (bitwise)."""
 import math
@@ -104,7 +106,22 @@ for h, dt in [(5e-4, 2.5e-8), (2.5e-4, 1.25e-8)]:
     check_le(f"spacing {h}: dissipated energy per new crack area within 10% of G_c", abs(g / GC - 1), 0.10,
              "lattice-calibrated beta; off-plane damage")
     if h == 5e-4:
-        check_le("kinetic + elastic + dissipated conserved within 1%", balance, 0.01, "O(dt) breaking step")
+        check_le("kinetic + elastic + dissipated conserved within 1%", balance, 0.01, "second-order breaking step")
+
+# order of the energy balance in dt: the bond-based strip with the critical
+# stretch, the same crack at three time steps
+balances = []
+for dt in (1e-7, 5e-8, 2.5e-8):
+    s = strip(5e-4, int(round(6e-5 / dt)), dt)
+    s = s.replace("pair_style pd/ordinary plane", "pair_style pd/bond plane")
+    s = s.replace(f"pair_coeff * * E {E} nu {NU} horizon {3.0001 * 5e-4} m 0.5 fail energy Gc {GC}",
+                  f"pair_coeff * * pmb E {E} horizon {3.0001 * 5e-4} fail stretch Gc {GC}")
+    _, rows = run(s, d)
+    balances.append(max(abs(r["v_total"] - rows[0]["v_total"]) for r in rows) / rows[0]["v_total"])
+print("bond-based strip, energy balance at dt = 1e-7, 5e-8, 2.5e-8: " + ", ".join(f"{b:.2e}" for b in balances))
+check("energy balance converges at second order in dt (ratio > 3 per halving)",
+      all(a > 3 * b for a, b in zip(balances, balances[1:])),
+      " ".join(f"{a / b:.2f}" for a, b in zip(balances, balances[1:])))
 
 # 3D slab: spacing 0.5 mm in make test (140 s on one core), 0.4 mm with
 # make validate (PDEXT_VALIDATE=1). At 1 mm (horizon 3 mm, a third of the

@@ -54,14 +54,16 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
       if (weighted) t *= b->weight[row + k];
       const double vj = vol[j];
       const double w = 0.25 * t * s * r0; /* energy density per partner volume */
-      /* critical stretch: the bond breaks now, before its force acts,
-       * releasing the energy it stores in this configuration (so kinetic +
-       * elastic + released stays consistent at this step) */
+      /* critical stretch: the bond breaks now, releasing the energy it
+       * stores in this configuration, and acts with half its force, so that
+       * the half-kicks around this step carry it up to this step (the
+       * energy balance stays second order in dt; see pd_ordinary.c) */
+      double share = 1.0;
       if (failing && !broken && s0i && fail->law == PD_FAIL_STRETCH && s > s0i[type[j]]) {
         pd_break_bond(fail, &sums, row + k, r0, i, j, w, w, vi, vj);
-        continue;
+        share = 0.5;
       }
-      const double tl = len > 0.0 ? t / len : 0.0;
+      const double tl = len > 0.0 ? share * t / len : 0.0;
       fxi += vj * tl * dx;
       fyi += vj * tl * dy;
       fzi += vj * tl * dz;
@@ -69,10 +71,11 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
       f[3 * j + 1] -= vi * tl * dy;
       f[3 * j + 2] -= vi * tl * dz;
       if (tallied) {
-        tally->energy += w * (vj + vi);
+        const double we = share == 1.0 ? w : 0.0;   /* a breaking bond's is booked as dissipated */
+        tally->energy += we * (vj + vi);
         if (tally->eatom) {
-          tally->eatom[i] += w * vj;
-          tally->eatom[j] += w * vi;
+          tally->eatom[i] += we * vj;
+          tally->eatom[j] += we * vi;
         }
         const double d[3] = {-dx, -dy, -dz};
         pd_tally_virial(tally, d, -tl * vi * vj);

@@ -1,6 +1,7 @@
 #include "pd_failure.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 /* Midpoint rule: the integrands are smooth on (0, delta) and at worst
  * integrably singular at 0; 200000 cells give ~1e-9 relative. */
@@ -50,4 +51,17 @@ double pd_critical_stretch(int dim, int plane_strain, double E, double nu, doubl
   }
   if (plane_strain) return sqrt(5.0 * M_PI * Gc / (12.0 * E * delta));
   return sqrt(4.0 * M_PI * Gc / (9.0 * E * delta));
+}
+
+int pd_failure_note_fresh(pd_failure *f, int idx)
+{
+  if (f->nfresh == f->maxfresh) {
+    const int room = f->maxfresh ? 2 * f->maxfresh : 256;
+    int *grown = (int *) realloc(f->fresh, (size_t) room * sizeof(int));
+    if (!grown) return 0;
+    f->fresh = grown;
+    f->maxfresh = room;
+  }
+  f->fresh[f->nfresh++] = idx;
+  return 1;
 }

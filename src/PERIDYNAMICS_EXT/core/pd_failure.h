@@ -33,7 +33,19 @@ typedef struct pd_failure {
   const double *alpha;
   const double *s0_atom;
   double *s0_new;
+  /* the bonds this call broke (indices into len0), kept so that the step
+   * can be evaluated again (the first evaluation of a next run, or after a
+   * restart) with the same forces; grown by realloc, owned by the caller */
+  int *fresh;
+  int nfresh, maxfresh;
+  /* 1: this call evaluates again the step in which the listed bonds broke
+   * (the caller made them intact again): they break as before, and nothing
+   * is booked twice */
+  int replay;
 } pd_failure;
+
+/* Append idx to f->fresh, growing it (0 when out of memory). */
+int pd_failure_note_fresh(pd_failure *f, int idx);
 
 /* A broken bond acts only while compressed (strain < 0), and only with
  * recontact. */
@@ -54,6 +66,8 @@ static inline void pd_break_bond(pd_failure *f, pd_break_sums *sums, int idx, do
                                  int j, double ei, double ej, double vi, double vj)
 {
   f->len0[idx] = -r0;
+  if (f->replay) return;
+  if (f->law != PD_FAIL_LEGACY) pd_failure_note_fresh(f, idx);
   sums->nbroken++;
   sums->released += ei * vj + ej * vi;
   sums->released_joule += (ei + ej) * vi * vj;

@@ -35,7 +35,7 @@ void pd_ordinary_dilatation(const pd_bond_view *b, const pd_ordinary_state *st,
  * (B/2 w eps^2 V_other at each end) and the virial. The dilatation part of
  * the energy is per atom: see pd_ordinary_atom. With fail (NULL: no bond is
  * or can be broken), broken bonds act only in compression (recontact), and
- * an intact bond in tension breaks at once, before its force acts, when its
+ * an intact bond in tension breaks (acting with half its force that once) when its
  * stretch exceeds s0 (stretch law) or when the instantaneous bond energies at its ends,
  * s = w eps (A + B eps / 2) per partner volume (T14 eq. 6.5), reach
  * s_c(i) + s_c(j) = w (crit_i + crit_j) / |xi|^2 (energy law, T14 eq. 6.3,
