@@ -19,8 +19,10 @@ The crack runs; the crack tip is the rightmost atom whose damage (MS07 eq.
   stretch) shows the order: 3.5e-4, 9.1e-5, 2.5e-5 at dt = 0.35, 0.18, 0.09
   of the stable step (a bond dropped whole, as before: 8.4e-3, 4.4e-3,
   2.3e-3, first order); the check asks for a ratio above 3 per halving.
-- 1 and 2 ranks break the same bonds; a run split by a restart continues
-  with the same broken bonds, dissipated energy and positions (bitwise)."""
+- 1 and 2 ranks break the same bonds; a run split in two runs, or by a
+  restart, continues with the same broken bonds, dissipated energy and
+  positions (to round-off: the step at the split is evaluated twice, and
+  bonds that broke in it act with half their force both times)."""
 import math
 import os
 from lmptest import *
@@ -149,6 +151,12 @@ check("1 and 2 ranks break the same number of bonds", finals[1]["c_frac[3]"] == 
 check_le("1 and 2 ranks dissipate the same energy", abs(finals[1]["c_frac[2]"] / finals[2]["c_frac[2]"] - 1), 1e-9,
          "round-off")
 check_le("1 and 2 ranks end at the same positions", max_rel_diff(read_dump(f"{d}/r1"), read_dump(f"{d}/r2")), 1e-10)
+
+# a run split in two in one process: the second run's first evaluation
+# repeats the step at which the first ended, bonds that broke there included
+run(strip(5e-4, STEPS // 2, DT, dumps=f"run {STEPS // 2}\n" + dump.format(name="split"), data="strip.data"), d)
+check_le("two runs end as one run (breaking step replayed)",
+         max_rel_diff(read_dump(f"{d}/r1"), read_dump(f"{d}/split")), 1e-12, "round-off")
 
 run(strip(5e-4, STEPS // 2, DT, dumps="write_restart half.restart\n", data="strip.data"), d)
 out, rows = run(f"""read_restart half.restart
