@@ -157,7 +157,8 @@ double PairPDContact::init_one(int i, int j)
   }
   // default stiffness: 15 times the material's micromodulus (MS07). Two
   // types take the harmonic mean of their own values: the softer body sets
-  // it, as in two springs in series. Not a value from the interface's
+  // it (twice the two springs in series, so a type with itself keeps its
+  // own). Not a value from the interface's
   // horizon, which is often set below the spacing to keep bodies unbonded.
   if (std::isnan(stiffness[i][j]) && material) {
     const double ci = material->contact_micromodulus(i, i), cj = material->contact_micromodulus(j, j);
