@@ -453,13 +453,8 @@ bool PairPD::failing() const
 // The failure state for one force evaluation of a failure-aware kernel.
 pd_failure PairPD::failure_state()
 {
-  if (atom->nmax > nreleased) {
-    nreleased = atom->nmax;
-    memory->destroy(released);
-    memory->create(released, nreleased, "pair:released");
-  }
+  zero_released();
   const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) released[i] = 0.0;
   pd_failure f = {};
   f.law = law;
   f.recontact = law == PD_FAIL_LEGACY ? 0 : recontact;    // PERI drops broken bonds
@@ -479,6 +474,26 @@ pd_failure PairPD::failure_state()
   // with half their force again, as the first time (see pd_ordinary.c)
   f.replay = law != PD_FAIL_LEGACY && bonds->unbreak_fresh(update->ntimestep);
   return f;
+}
+
+// The per-atom energy one evaluation dissipates (owned + ghost), zeroed.
+double *PairPD::zero_released()
+{
+  if (atom->nmax > nreleased) {
+    nreleased = atom->nmax;
+    memory->destroy(released);
+    memory->create(released, nreleased, "pair:released");
+  }
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) released[i] = 0.0;
+  return released;
+}
+
+// Add the per-atom energy of one evaluation to the owners' totals.
+void PairPD::book_released()
+{
+  bonds->sum_to_owners(released);
+  for (int i = 0; i < atom->nlocal; i++) bonds->dissipated_atom[i] += released[i];
 }
 
 // Book what one evaluation broke: totals on this rank, and the per-atom
@@ -504,8 +519,7 @@ void PairPD::account_failure(const pd_failure &f)
   bonds->set_has_broken();
   bonds->add_broken(f.nbroken);
   bonds->add_dissipated(f.released, f.released_joule);
-  bonds->sum_to_owners(released);
-  for (int i = 0; i < atom->nlocal; i++) bonds->dissipated_atom[i] += released[i];
+  book_released();
 }
 
 double PairPD::bond_weight(int itype, int jtype, double r) const

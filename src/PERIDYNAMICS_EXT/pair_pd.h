@@ -95,6 +95,8 @@ class PairPD : public Pair {
   bool failing() const;
   pd_failure failure_state();
   void account_failure(const pd_failure &f);
+  double *zero_released();
+  void book_released();
   double *released;         // per-atom released energy of one step (owned + ghost)
   int *fresh;               // len0 indices of the bonds one evaluation broke (malloc'd by the core)
   int maxfresh;

@@ -112,9 +112,10 @@ void PairPDBond::compute(int eflag, int vflag)
     if (bonds->has_broken() || law != PD_FAIL_NONE)
       error->all(FLERR, "Pair pd/bond: microplastic bonds cannot be broken (no failure law or "
                  "pre-crack in a style with microplastic pairs)");
-    pd_microplastic mp = {coef[YIELD][0], bonds->history_data(), 0.0, 0.0};
+    pd_microplastic mp = {coef[YIELD][0], bonds->history_data(), 0.0, 0.0, zero_released()};
     pd_microplastic_forces(&v, &mat, &mp, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
     bonds->add_dissipated(mp.dissipated, mp.dissipated_joule);
+    book_released();
   } else if (failing()) {
     pd_failure fail = failure_state();
     pd_pmb_forces(&v, &mat, &fail, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);

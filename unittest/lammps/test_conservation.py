@@ -65,8 +65,10 @@ def microplastic_balance(dt):
     script = block(16) + ROUGH_VELOCITY + f"""pair_style pd/bond
 pair_coeff * * microplastic K {BULK} horizon {HORIZON} yield_stretch 1e-4
 compute plastic all pair pd/bond
+compute frac all pd/fracture
+compute peratom all reduce sum c_frac
 variable total equal etotal+c_plastic[1]
-thermo_style custom step ke pe c_plastic[1] v_total
+thermo_style custom step ke pe c_plastic[1] v_total c_frac[1] c_frac[2] c_peratom
 thermo_modify format float %.15g
 fix 1 all nve
 timestep {dt}
@@ -75,11 +77,17 @@ run {steps}
 """
     _, rows = run(script, d)
     e0 = rows[0]["v_total"]
-    return rows[-1]["c_plastic[1]"] / e0, max(abs(r["v_total"] - e0) for r in rows) / e0
+    last = rows[-1]
+    # plastic work in compute pd/fracture: the sum of the per-atom densities
+    # is value 1, and with equal volumes V times it is value 2 (joules)
+    books = max(abs(last["c_peratom"] / last["c_frac[1]"] - 1),
+                abs(VOLUME * last["c_frac[1]"] / last["c_frac[2]"] - 1))
+    return last["c_plastic[1]"] / e0, max(abs(r["v_total"] - e0) for r in rows) / e0, books
 
 
-work, dev1 = microplastic_balance(5e-8)
-_, dev2 = microplastic_balance(2.5e-8)
+work, dev1, books = microplastic_balance(5e-8)
+check_le("microplastic: per-atom, density-sum and joule plastic work agree", books, 1e-12, "round-off")
+_, dev2, _ = microplastic_balance(2.5e-8)
 print(f"microplastic: plastic work {work:.2f} of the initial energy; balance deviation {dev1:.2e} at dt, "
       f"{dev2:.2e} at dt/2")
 check("microplastic: bonds yield (plastic work > 10% of the energy)", work > 0.1)

@@ -47,6 +47,10 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
           const double wp = c * sy * fabs(excess) * r0 * (weighted ? b->weight[row + k] : 1.0);
           work += wp * 0.5 * (vol[j] + vi);
           work_joule += wp * vol[j] * vi;
+          if (mp->work_atom) {   /* half at each end: sum_i V_i d_i is the joules */
+            mp->work_atom[i] += 0.5 * wp * vol[j];
+            mp->work_atom[j] += 0.5 * wp * vi;
+          }
         }
         s -= *sp;
       }

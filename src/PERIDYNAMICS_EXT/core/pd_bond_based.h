@@ -20,6 +20,7 @@ typedef struct pd_microplastic {
   double *plastic;    /* per-bond plastic stretch, laid out as the bonds */
   double dissipated;  /* plastic work added by each call (energy-density sum) */
   double dissipated_joule; /* the same in joules */
+  double *work_atom;  /* per-atom plastic work density added by each call (owned + ghost), or NULL */
 } pd_microplastic;
 
 /* Force density on every bond end: f_i += V_j c s w e_ij, f_j -= V_i c s w e_ij,
@@ -27,8 +28,8 @@ typedef struct pd_microplastic {
  * over owned and ghost atoms. When tally is not NULL, adds the energy density
  * 1/4 c s^2 |xi| w V_other to each end and the virial. With fail (NULL: no
  * bond is or can be broken) broken bonds act only in compression (recontact)
- * and a bond whose stretch exceeds s0 breaks after this step, releasing its
- * energy into fail's sums. */
+ * and a bond whose stretch exceeds s0 breaks in this evaluation, acting with
+ * half its force, and releases its energy into fail's sums. */
 void pd_pmb_forces(const pd_bond_view *b, const pd_pmb *mat, pd_failure *fail, const int *type,
                    const double *x, const double *vol, double *f, pd_tally *tally);
 
