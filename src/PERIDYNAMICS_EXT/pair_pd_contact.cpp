@@ -139,7 +139,10 @@ void PairPDContact::init_style()
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       if (!std::isnan(distance[i][j])) cutmax_contact = MAX(cutmax_contact, distance[i][j]);
-      if (std::isnan(stiffness[i][j]) && !material)
+      // an unset I J pair mixes the I I and J J values (init_one)
+      const bool mixes = i != j && !setflag[i][j] && !std::isnan(stiffness[i][i]) &&
+          !std::isnan(stiffness[j][j]);
+      if (std::isnan(stiffness[i][j]) && !material && !mixes)
         error->all(FLERR, "Pair pd/contact coeff {} {}: without a pd/ material style (hybrid/overlay) "
                    "give 'stiffness <c_s>'", i, j);
     }

@@ -127,4 +127,10 @@ check_le("default stiffness of a type: 15 x 12 E / (pi delta^4)",
 check_le("unlike types: the harmonic mean of their own values", abs(c12 / (2 * c11 * c22 / (c11 + c22)) - 1), 1e-5,
          "the softer body sets it; not from the pair's horizon")
 
+# pd/contact alone, stiffness given for each type only: the unset 1 2 pair
+# takes the mean of the two (LAMMPS-style mixing), no ERROR.
+out, _ = run(blocks("pair_style pd/contact\npair_coeff 1 1 stiffness 1e22\npair_coeff 2 2 stiffness 3e22\n",
+                    steps=0), d)
+check_le("pd/contact alone: an unset pair mixes the given values",
+         abs(log_value(out, r"stiffness c_s.* 1-2 ([0-9.e+]+)") / 2e22 - 1), 1e-12)
 finish()
