@@ -137,15 +137,8 @@ void PairPDContact::init_style()
     cutmax_contact = 1.35 * material->legacy_spacing();
   }
   for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
+    for (int j = i; j <= atom->ntypes; j++)
       if (!std::isnan(distance[i][j])) cutmax_contact = MAX(cutmax_contact, distance[i][j]);
-      // an unset I J pair mixes the I I and J J values (init_one)
-      const bool mixes = i != j && !setflag[i][j] && !std::isnan(stiffness[i][i]) &&
-          !std::isnan(stiffness[j][j]);
-      if (std::isnan(stiffness[i][j]) && !material && !mixes)
-        error->all(FLERR, "Pair pd/contact coeff {} {}: without a pd/ material style (hybrid/overlay) "
-                   "give 'stiffness <c_s>'", i, j);
-    }
 
   // a half list of its own, with its own short cutoff: not the horizon
   PDCompat::request_pair_with_cutoff(neighbor, this, instance_me, cutmax_contact + neighbor->skin);
@@ -161,12 +154,15 @@ double PairPDContact::init_one(int i, int j)
   // default stiffness: 15 times the material's micromodulus (MS07). Two
   // types take the harmonic mean of their own values: the softer body sets
   // it (twice the two springs in series, so a type with itself keeps its
-  // own). Not a value from the interface's
-  // horizon, which is often set below the spacing to keep bodies unbonded.
+  // own). Not a value from the interface's horizon, which is often set
+  // below the spacing to keep bodies unbonded.
   if (std::isnan(stiffness[i][j]) && material) {
     const double ci = material->contact_micromodulus(i, i), cj = material->contact_micromodulus(j, j);
     stiffness[i][j] = 15.0 * 2.0 * ci * cj / (ci + cj);
   }
+  if (std::isnan(stiffness[i][j]))
+    error->all(FLERR, "Pair pd/contact coeff {} {}: without a pd/ material style (hybrid/overlay) "
+               "give 'stiffness <c_s>'", i, j);
   stiffness[j][i] = stiffness[i][j];
   distance[j][i] = distance[i][j];
   return cutmax_contact;
