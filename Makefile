@@ -47,6 +47,7 @@ validate: build
 	PDEXT_LMP=$(LMP) PDEXT_VALIDATE=1 python3 unittest/lammps/test_fracture.py
 	./examples/riemann-2d/run.sh $(LMP)
 	./examples/plate-impact-2d/run.sh $(LMP)
+	./unittest/valgrind/run.sh $(LMP)
 
 clean:
 	rm -rf $(BUILD_DIR)

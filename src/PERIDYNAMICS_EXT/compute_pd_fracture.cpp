@@ -1,7 +1,7 @@
 /* ----------------------------------------------------------------------
    PERIDYNAMICS_EXT: compute pd/fracture.
    Global vector: 1 dissipated energy (sum of energy densities, the PERI
-   convention of the thermo energies), 2 the same in joules, 3 bonds broken
+   convention of the thermo energies), 2 the same in energy units, 3 bonds broken
    by fracture, 4 partners lost. Per atom: dissipated energy density.
    The dissipated energy includes microplastic work (pd/bond).
 ------------------------------------------------------------------------- */

@@ -13,10 +13,13 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "pair_pd.h"
 #include "pd_compat.h"
+#include "pd_error.h"
 #include "update.h"
 
 #include <cmath>
@@ -27,8 +30,9 @@ using namespace FixConst;
 
 // Tag of the global restart record: bump it whenever the layout of the
 // record or of the per-atom restart data changes.
-static constexpr double RESTART_FORMAT = 20261122.2;
-static constexpr int PER_ATOM_FIXED = 5;    // count, own tag, family and weighted volume, dissipated
+static constexpr double RESTART_FORMAT = 20261201.1;
+static constexpr int PER_ATOM_FIXED = 5;
+static constexpr double MAX_INTACT_LENGTH = 11.0;    // stretch 10: no material survives it    // count, own tag, family and weighted volume, dissipated
 
 // Which end stores a bond: the smaller tag when the tags' sum is even, the
 // larger when odd. Either rule stores each bond once; alternating keeps the
@@ -43,9 +47,12 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), dissipated_atom(nullptr), owner(nullptr), built_tag(nullptr),
     use_weights(0), nhistory(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
     r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), nlost_reported(0), dissipated(0.0), dissipated_joule(0.0), nbroken_local(0), any_broken(0),
-    family_key(0.0), fresh_step(-1), list(nullptr),
+    family_key(0.0), fresh_step(-1), list(nullptr), guard_step(INFINITY), damaged(0), damaged_example(0),
+    intact_at_map(-1), breaks_since_map(0), stored_total(0),
     comm_array(nullptr), comm_width(1), comm_max(0)
 {
+  if (strcmp(id, "PD_BONDS") != 0)
+    error->all(FLERR, "Fix pd/bonds is created by the pd/ pair styles (as PD_BONDS); do not define it by hand");
   if (narg != 6 || strcmp(arg[4], "history") != 0)
     error->all(FLERR, "Illegal fix pd/bonds command: expected 'weights|noweights history N' "
                "(it is created by the pd/ pair styles)");
@@ -91,7 +98,7 @@ FixPDBonds::~FixPDBonds()
 
 int FixPDBonds::setmask()
 {
-  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | POST_RUN;
+  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | POST_RUN | END_OF_STEP;
 }
 
 // Lost partners are counted all along; say so once per run when there are new ones.
@@ -105,9 +112,19 @@ void FixPDBonds::post_run()
   nlost_reported = total;
 }
 
+// The families serve the pd/ material style of the current pair style. A run
+// without one (pair_style none, or another style between runs) keeps them
+// as they are: not mapped, not used, nothing dropped, until it returns.
 void FixPDBonds::init()
 {
-  if (!owner) error->all(FLERR, "Fix pd/bonds is created by a pd/ pair style; do not define it by hand");
+  PairPD *pair = PairPD::active(force);
+  owner = pair && pair->bond_store() == this ? pair : nullptr;
+  if (!owner) {
+    if (built && comm->me == 0)
+      utils::logmesg(lmp, "pd/bonds: no pd/ material pair style in this run; the bond families "
+                     "are kept unchanged until one returns\n");
+    return;
+  }
   if (!built) PDCompat::request_occasional_full(neighbor, this, instance_me);
 }
 
@@ -118,10 +135,16 @@ void FixPDBonds::init_list(int, NeighList *ptr)
 
 void FixPDBonds::setup_post_neighbor()
 {
-  if (!built) build_families();
+  if (!owner) nowned = 0;
+  else if (!built) build_families();
   else {
     map_partners(true);
     check_identities();
+    // kept families (an earlier run, or a restart file): the log shows
+    // that they were not rebuilt, and how many bonds they hold
+    if (comm->me == 0)
+      utils::logmesg(lmp, "pd/bonds: {} bonds kept, {} of them broken (families from an earlier run or "
+                     "the restart file, not rebuilt)\n", stored_total, stored_total - intact_at_map);
   }
 }
 
@@ -154,7 +177,7 @@ void FixPDBonds::check_identities()
 
 void FixPDBonds::post_neighbor()
 {
-  map_partners(false);
+  if (owner) map_partners(false);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -194,10 +217,20 @@ void FixPDBonds::build_families()
     npartner[i] = 0;
     built_tag[i] = tag[i];
   }
+  // type pairs whose atoms come within one of the two types' horizons
+  const int nt = atom->ntypes + 1;
+  std::vector<bigint> touching(nt * nt, 0);
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
+      const int a = MIN(type[i], type[j]), b = MAX(type[i], type[j]);
+      if (a != b && !touching[a * nt + b]) {
+        double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+        domain->minimum_image(d[0], d[1], d[2]);
+        const double reach = MAX(owner->horizon(a, a), owner->horizon(b, b));
+        touching[a * nt + b] = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= reach * reach;
+      }
       const double r = reference_length(i, j);
       if (r < 0.0) continue;
       const int k = npartner[i]++;
@@ -218,17 +251,76 @@ void FixPDBonds::build_families()
   built = 1;
   map_partners(true);
   reference_sums();
+  // cracks of a restart file written before the first run (their fixes
+  // need not exist any more); this run's pd/precrack fixes cut for themselves
+  bigint precut = 0;
+  for (const PendingCut &c : pending_cuts)
+    if (c.fixid.empty()) precut += cut_crossing(c.crack, c.groupbit);
+  pending_cuts.clear();
 
   bigint nbonds = 0, mybonds = 0;
   for (int i = 0; i < nlocal; i++) mybonds += npartner[i];
   MPI_Allreduce(&mybonds, &nbonds, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  report_bonds_by_type(touching);
   if (comm->me == 0) {
     const double bytes = bytes_per_bond();
     utils::logmesg(lmp,
                    "pd/bonds: {} bonds, {:.2f} bonds per atom (each stored once), "
                    "up to {} owned per atom, {:.0f} bytes per bond\n",
                    nbonds, 2.0 * nbonds / MAX(atom->natoms, 1), maxpartner, bytes);
+    if (precut)
+      utils::logmesg(lmp, "pd/bonds: {} bonds cut by the pre-cracks saved in the restart file\n", precut);
   }
+}
+
+// Bonds per atom of each type and between each pair of types, as built. A
+// type whose atoms have almost no bonds would run as free particles (a
+// horizon below the real spacing: wrong units, volume or lattice), so it is
+// an error; two types that touch but share no bonds get a warning unless
+// the user said so ('nobond').
+void FixPDBonds::report_bonds_by_type(const std::vector<bigint> &touching_mine)
+{
+  static constexpr double MIN_BONDS_PER_ATOM = 3.0;
+  const int nt = atom->ntypes + 1;
+  const int *type = atom->type;
+  // counts[a * nt + b]: bonds between types a <= b; counts[t * nt]: atoms of type t
+  std::vector<bigint> mine(nt * nt, 0), counts(nt * nt), touching(nt * nt);
+  for (int i = 0; i < atom->nlocal; i++) {
+    mine[type[i] * nt]++;
+    for (int k = 0; k < npartner[i]; k++) {
+      const int a = type[i], b = type[far[i][k]];
+      mine[MIN(a, b) * nt + MAX(a, b)]++;
+    }
+  }
+  MPI_Allreduce(mine.data(), counts.data(), nt * nt, MPI_LMP_BIGINT, MPI_SUM, world);
+  MPI_Allreduce(touching_mine.data(), touching.data(), nt * nt, MPI_LMP_BIGINT, MPI_MAX, world);
+  std::string per_type, between;
+  for (int t = 1; t < nt; t++) {
+    if (!counts[t * nt]) continue;
+    bigint ends = 2 * counts[t * nt + t];
+    for (int u = 1; u < nt; u++)
+      if (u != t) ends += counts[MIN(t, u) * nt + MAX(t, u)];
+    const double per_atom = (double) ends / counts[t * nt];
+    per_type += fmt::format(" type {} {:.2f};", t, per_atom);
+    // (a type left to another sub-style of a hybrid has no horizon here)
+    if (per_atom < MIN_BONDS_PER_ATOM && !std::isnan(owner->horizon(t, t)))
+      error->all(FLERR, "Fix pd/bonds: atoms of type {} have {:.2f} bonds on average (horizon {}): "
+                 "they would move as free particles. The horizon must span several particle "
+                 "spacings: check the lattice spacing, 'set volume' and the units", t, per_atom,
+                 owner->horizon(t, t));
+    for (int u = t + 1; u < nt; u++) {
+      if (!counts[u * nt]) continue;
+      between += fmt::format(" {}-{} {};", t, u, counts[t * nt + u]);
+      if (touching[t * nt + u] && !counts[t * nt + u] && owner->horizon(t, u) > 0.0 && comm->me == 0)
+        error->warning(FLERR, "Fix pd/bonds: types {} and {} touch (atoms within each other's "
+                       "horizon) but share no bonds (their horizon {} is below the spacing); to "
+                       "keep them unbonded write 'pair_coeff {} {} nobond'", t, u,
+                       owner->horizon(t, u), t, u);
+    }
+  }
+  if (comm->me == 0)
+    utils::logmesg(lmp, "pd/bonds: bonds per atom by type:{}{}{}\n", per_type,
+                   between.empty() ? "" : " bonds between types:", between);
 }
 
 // Local indices of the far ends: the image closest to the owner, valid until
@@ -237,11 +329,12 @@ void FixPDBonds::build_families()
 // own it, so that the same bonds are lost on any number of ranks.
 void FixPDBonds::map_partners(bool setup)
 {
+  if (setup) check_stored_partners();
   nowned = atom->nlocal;
   const double cut = comm->get_comm_cutoff(), cutsq = cut * cut;
   const int nall = atom->nlocal + atom->nghost;
   double **x = atom->x;
-  const bigint lost_before = nlost_local;    // intact bonds lost so far
+  std::string overstretched;
   for (int i = 0; i < nowned; i++)
     for (int k = 0; k < npartner[i]; k++) {
       int j = atom->map(partner[i][k]);
@@ -249,27 +342,84 @@ void FixPDBonds::map_partners(bool setup)
       if (j >= 0) j = domain->closest_image(i, j);
       if (j >= 0) {
         const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
-        if (dx * dx + dy * dy + dz * dz > cutsq) j = -1;
+        const double len2 = dx * dx + dy * dy + dz * dz;
+        if (len2 > cutsq) j = -1;
+        // an intact bond eleven times its length: the run has blown up
+        else if (len2 > MAX_INTACT_LENGTH * MAX_INTACT_LENGTH * r0[i][k] * r0[i][k] && r0[i][k] > 0.0 &&
+                 overstretched.empty())
+          overstretched = fmt::format("Fix pd/bonds: the run is unstable at step {}: intact bond {}-{} "
+                                      "is stretched to {:.3g} times its length; likely cause: the time "
+                                      "step {:.6g} is too large (see the stable estimate in the log)",
+                                      update->ntimestep, atom->tag[i], partner[i][k],
+                                      sqrt(len2) / r0[i][k], update->dt);
       }
       if (j < 0) {
-        // a broken bond whose ends drifted apart is simply gone; an intact one is lost
-        if (r0[i][k] > 0.0) nlost_local++;
-        remove_bond(i, k--);
+        remove_bond(i, k--);    // counted below, if intact
         continue;
       }
       far[i][k] = j;
     }
+  pd_error_collective(lmp, overstretched);
+  const bigint lost = count_lost();
   // minimize's line search moves atoms by up to 'min_modify dmax' (0.1
   // length units by default: 10 cm in SI), which tears bonds that physics
-  // would keep; every rank is here at once, so the check is collective
-  if (update->whichflag == 2 && !setup) {
-    const int mine = nlost_local > lost_before;
-    int any;
-    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-    if (any)
-      error->all(FLERR, "Fix pd/bonds: bond partners moved beyond the ghost cutoff during "
-                 "minimize; limit the line search step with 'min_modify dmax' (a small "
-                 "fraction of the particle spacing)");
+  // would keep
+  if (update->whichflag == 2 && !setup && lost > 0)
+    error->all(FLERR, "Fix pd/bonds: bond partners moved beyond the ghost cutoff during "
+               "minimize; limit the line search step with 'min_modify dmax' (a small "
+               "fraction of the particle spacing)");
+}
+
+// Intact bonds lost since the last mapping, over all ranks: those that
+// vanished without breaking, whichever end stored them (a partner beyond
+// the ghost cutoff, an atom deleted or lost from the box with the bonds it
+// stored). Counting from both ends makes the count independent of which
+// end stores a bond, and so of the rank count (atom IDs, and so storage,
+// depend on it). A broken bond that vanishes is not counted.
+bigint FixPDBonds::count_lost()
+{
+  bigint mine[3] = {0, breaks_since_map, 0}, sums[3];
+  for (int i = 0; i < nowned; i++) {
+    mine[2] += npartner[i];
+    for (int k = 0; k < npartner[i]; k++) mine[0] += r0[i][k] > 0.0;
+  }
+  MPI_Allreduce(mine, sums, 3, MPI_LMP_BIGINT, MPI_SUM, world);
+  const bigint lost = intact_at_map < 0 ? 0 : intact_at_map - sums[1] - sums[0];
+  intact_at_map = sums[0];
+  stored_total = sums[2];
+  breaks_since_map = 0;
+  if (comm->me == 0) nlost_local += lost;
+  return lost;
+}
+
+// What a restart file or a migration delivered must name real atoms and
+// real lengths before it is used to index anything (a damaged file).
+void FixPDBonds::check_stored_partners()
+{
+  bigint total_damaged, claimed = damaged ? damaged_example : 0, bad_count;
+  MPI_Allreduce(&damaged, &total_damaged, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  MPI_Allreduce(&claimed, &bad_count, 1, MPI_LMP_BIGINT, MPI_MAX, world);
+  if (total_damaged)
+    error->all(FLERR, "Fix pd/bonds: {} atoms arrived with a bond count outside 0 to {} (e.g. {}): "
+               "the restart file is damaged", total_damaged, maxpartner, bad_count);
+  bigint bad = 0;
+  tagint example = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int k = 0; k < npartner[i]; k++)
+      if (partner[i][k] <= 0 || partner[i][k] > atom->map_tag_max || !std::isfinite(r0[i][k]) ||
+          r0[i][k] == 0.0) {
+        bad++;
+        example = atom->tag[i];
+      }
+  bigint anybad;
+  MPI_Allreduce(&bad, &anybad, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (anybad) {
+    tagint who;
+    MPI_Allreduce(&example, &who, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+    error->all(FLERR, "Fix pd/bonds: {} stored bonds name no existing atom or have no valid "
+               "length (e.g. atom {}'s): atom IDs changed since the bond families were built "
+               "('delete_atoms ... compress yes', reset_atom_ids), or the restart file is damaged",
+               anybad, who);
   }
 }
 
@@ -450,8 +600,15 @@ int FixPDBonds::pack_exchange(int i, double *buf)
 int FixPDBonds::unpack_exchange(int i, double *buf)
 {
   int m = 0;
-  npartner[i] = (int) ubuf(buf[m++]).i;
-  if (npartner[i] > maxpartner) error->one(FLERR, "Fix pd/bonds: atom arrived with more bonds than the tables hold");
+  const bigint count = ubuf(buf[m++]).i;
+  if (count < 0 || count > maxpartner) {
+    // a damaged record: said collectively at the next mapping (check_stored_partners)
+    if (!damaged) damaged_example = count;
+    damaged++;
+    npartner[i] = 0;
+    return m;
+  }
+  npartner[i] = (int) count;
   built_tag[i] = (tagint) ubuf(buf[m++]).i;
   family_volume[i] = buf[m++];
   weighted_volume[i] = buf[m++];
@@ -465,50 +622,105 @@ int FixPDBonds::unpack_exchange(int i, double *buf)
   return m;
 }
 
+// The global record: format tag, its length, then named fields (see the
+// order below), the bonds broken at the last evaluation with their lengths
+// (every rank has them all) and the cracks waiting for the families.
+namespace {
+enum { R_FORMAT, R_SIZE, R_BUILT, R_MAXPARTNER, R_WEIGHTS, R_LOST, R_HISTORY, R_DISSIPATED,
+       R_KEY, R_JOULE, R_BROKEN, R_ANYBROKEN, R_FRESH_STEP, R_NFRESH, R_NCUTS, R_INTACT, R_BREAKS,
+       R_FIXED };
+constexpr int CUT_DOUBLES = 11;    // patch, a, b, c, groupbit
+}
+
 void FixPDBonds::write_restart(FILE *fp)
 {
   double total_lost = compute_scalar(), sums[2], mine[2] = {dissipated, dissipated_joule};
   MPI_Allreduce(mine, sums, 2, MPI_DOUBLE, MPI_SUM, world);
-  bigint total_broken = 0;
+  bigint total_broken = 0, breaks = 0;
   MPI_Allreduce(&nbroken_local, &total_broken, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (comm->me == 0) {
-    // the record, then the bonds broken at the last evaluation (every rank
-    // has them all) with its step, so that a restart replays that step
-    std::vector<double> list = {RESTART_FORMAT, (double) built, (double) maxpartner, (double) use_weights,
-                                total_lost, (double) nhistory, sums[0], family_key, sums[1],
-                                (double) total_broken, (double) any_broken, (double) fresh_step,
-                                (double) fresh_pairs.size()};
-    for (tagint t : fresh_pairs) list.push_back((double) t);
-    int size = list.size() * sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list.data(), sizeof(double), list.size(), fp);
+  MPI_Allreduce(&breaks_since_map, &breaks, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (comm->me != 0) return;
+  std::vector<const PendingCut *> cuts;
+  for (const PendingCut &c : pending_cuts)
+    if (!built && (c.fixid.empty() || modify->find_fix(c.fixid.c_str()) >= 0)) cuts.push_back(&c);
+  std::vector<double> list(R_FIXED);
+  list[R_FORMAT] = RESTART_FORMAT;
+  list[R_BUILT] = built;
+  list[R_MAXPARTNER] = maxpartner;
+  list[R_WEIGHTS] = use_weights;
+  list[R_LOST] = total_lost;
+  list[R_HISTORY] = nhistory;
+  list[R_DISSIPATED] = sums[0];
+  list[R_KEY] = family_key;
+  list[R_JOULE] = sums[1];
+  list[R_BROKEN] = (double) total_broken;
+  list[R_ANYBROKEN] = any_broken;
+  list[R_FRESH_STEP] = (double) fresh_step;
+  list[R_NFRESH] = (double) fresh_length.size();
+  list[R_NCUTS] = (double) cuts.size();
+  list[R_INTACT] = (double) intact_at_map;
+  list[R_BREAKS] = (double) breaks;
+  for (tagint t : fresh_pairs) list.push_back((double) t);
+  for (double l : fresh_length) list.push_back(l);
+  for (const PendingCut *c : cuts) {
+    list.push_back(c->crack.patch);
+    for (const double *v : {c->crack.a, c->crack.b, c->crack.c}) list.insert(list.end(), v, v + 3);
+    list.push_back(c->groupbit);
   }
+  list[R_SIZE] = (double) list.size();
+  int size = list.size() * sizeof(double);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(list.data(), sizeof(double), list.size(), fp);
 }
 
 void FixPDBonds::restart(char *buf)
 {
-  if (((double *) buf)[0] != RESTART_FORMAT)
+  const double *list = (const double *) buf;
+  if (list[R_FORMAT] != RESTART_FORMAT)
     error->all(FLERR, "Fix pd/bonds: the restart file's bonds are in another format than this build "
                "reads (format {}; written by an older or newer PERIDYNAMICS_EXT)", RESTART_FORMAT);
-  double *list = (double *) buf + 1;
-  if ((int) list[2] != use_weights)
+  const double nfresh = list[R_NFRESH], ncuts = list[R_NCUTS];
+  const bool sane = (list[R_BUILT] == 0.0 || list[R_BUILT] == 1.0) && list[R_MAXPARTNER] >= 1.0 &&
+      list[R_MAXPARTNER] <= 1e6 && nfresh >= 0.0 && nfresh <= 1e9 && ncuts >= 0.0 && ncuts <= 1e6 &&
+      list[R_SIZE] == R_FIXED + 3.0 * nfresh + CUT_DOUBLES * ncuts && list[R_LOST] >= 0.0 &&
+      list[R_BROKEN] >= 0.0 && std::isfinite(list[R_DISSIPATED]) && std::isfinite(list[R_JOULE]);
+  if (!sane)
+    error->all(FLERR, "Fix pd/bonds: the restart file's bond record is damaged (inconsistent "
+               "counts); it cannot be read");
+  if ((int) list[R_WEIGHTS] != use_weights)
     error->all(FLERR, "Fix pd/bonds: restart file bonds {} weights, the pair style now {}",
-               list[2] ? "carry" : "carry no", use_weights ? "needs them" : "does not");
-  if ((int) list[4] != nhistory)
+               list[R_WEIGHTS] ? "carry" : "carry no", use_weights ? "needs them" : "does not");
+  if ((int) list[R_HISTORY] != nhistory)
     error->all(FLERR, "Fix pd/bonds: restart file bonds carry {} history values, the pair style "
-               "now needs {}", (int) list[4], nhistory);
-  built = (int) list[0];
-  resize_tables((int) list[1]);
+               "now needs {}", (int) list[R_HISTORY], nhistory);
+  built = (int) list[R_BUILT];
+  resize_tables((int) list[R_MAXPARTNER]);
   // totals are kept once, on rank 0, so the global sums carry over
-  nlost_local = comm->me == 0 ? (bigint) list[3] : 0;
-  dissipated = comm->me == 0 ? list[5] : 0.0;
-  family_key = list[6];
-  dissipated_joule = comm->me == 0 ? list[7] : 0.0;
-  nbroken_local = comm->me == 0 ? (bigint) list[8] : 0;
-  any_broken = (int) list[9];
-  fresh_step = (bigint) list[10];
-  fresh_pairs.resize((size_t) list[11]);
-  for (size_t p = 0; p < fresh_pairs.size(); p++) fresh_pairs[p] = (tagint) list[12 + p];
+  nlost_local = comm->me == 0 ? (bigint) list[R_LOST] : 0;
+  dissipated = comm->me == 0 ? list[R_DISSIPATED] : 0.0;
+  family_key = list[R_KEY];
+  dissipated_joule = comm->me == 0 ? list[R_JOULE] : 0.0;
+  nbroken_local = comm->me == 0 ? (bigint) list[R_BROKEN] : 0;
+  any_broken = (int) list[R_ANYBROKEN];
+  fresh_step = (bigint) list[R_FRESH_STEP];
+  intact_at_map = (bigint) list[R_INTACT];
+  breaks_since_map = comm->me == 0 ? (bigint) list[R_BREAKS] : 0;
+  const double *p = list + R_FIXED;
+  fresh_pairs.assign(p, p + 2 * (size_t) nfresh);
+  p += 2 * (size_t) nfresh;
+  fresh_length.assign(p, p + (size_t) nfresh);
+  p += (size_t) nfresh;
+  pending_cuts.clear();
+  for (int c = 0; c < (int) ncuts; c++, p += CUT_DOUBLES) {
+    PendingCut cut = {"", {}, (int) p[10]};
+    cut.crack.patch = (int) p[0];
+    for (int d = 0; d < 3; d++) {
+      cut.crack.a[d] = p[1 + d];
+      cut.crack.b[d] = p[4 + d];
+      cut.crack.c[d] = p[7 + d];
+    }
+    pending_cuts.push_back(cut);
+  }
 }
 
 // New row length of the per-atom bond tables (their contents are dropped:
@@ -554,9 +766,28 @@ int FixPDBonds::maxsize_restart()
   return per_atom_max() + 1;
 }
 
+// A second evaluation of the step in which the listed bonds broke replays
+// it only if they are where they were then (after a restart, or the setup of
+// the next run); commands between runs that move atoms (displace_atoms in a
+// 'run 0' loop, set, velocity ...) make it a new evaluation, booked as such.
 bool FixPDBonds::unbreak_fresh(bigint step)
 {
   if (step != fresh_step || fresh_pairs.empty()) return false;
+  int moved = 0, anymoved;
+  for (size_t p = 0; p < fresh_length.size() && !moved; p++) {
+    const int i = atom->map(fresh_pairs[2 * p]);
+    if (i < 0 || i >= nowned) continue;
+    for (int k = 0; k < npartner[i]; k++)
+      if (partner[i][k] == fresh_pairs[2 * p + 1] &&
+          fabs(current_length(i, k) - fresh_length[p]) > 1e-10 * fresh_length[p])
+        moved = 1;
+  }
+  MPI_Allreduce(&moved, &anymoved, 1, MPI_INT, MPI_MAX, world);
+  if (anymoved) {
+    fresh_pairs.clear();
+    fresh_length.clear();
+    return false;
+  }
   sign_fresh(1.0);
   return true;
 }
@@ -564,6 +795,14 @@ bool FixPDBonds::unbreak_fresh(bigint step)
 void FixPDBonds::rebreak_fresh()
 {
   sign_fresh(-1.0);
+}
+
+double FixPDBonds::current_length(int i, int k) const
+{
+  double **x = atom->x;
+  const int j = far[i][k];
+  const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
+  return sqrt(dx * dx + dy * dy + dz * dz);
 }
 
 // Set the sign of the listed bonds' reference lengths (on their owners).
@@ -581,18 +820,62 @@ void FixPDBonds::note_fresh(const int *idx, int n, bigint step, bool any)
 {
   fresh_step = step;
   fresh_pairs.clear();
+  fresh_length.clear();
   if (!any) return;
   std::vector<tagint> mine(2 * (size_t) n);
+  std::vector<double> mylength(n);
   for (int q = 0; q < n; q++) {
     const int i = idx[q] / maxpartner, k = idx[q] % maxpartner;
     mine[2 * q] = atom->tag[i];
     mine[2 * q + 1] = partner[i][k];
+    mylength[q] = current_length(i, k);
   }
-  int count = 2 * n;
   std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
   for (int r = 1; r < comm->nprocs; r++) displs[r] = displs[r - 1] + counts[r - 1];
-  fresh_pairs.resize(displs.back() + counts.back());
-  MPI_Allgatherv(mine.data(), count, MPI_LMP_TAGINT, fresh_pairs.data(), counts.data(), displs.data(),
+  fresh_length.resize(displs.back() + counts.back());
+  MPI_Allgatherv(mylength.data(), n, MPI_DOUBLE, fresh_length.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, world);
+  for (int r = 0; r < comm->nprocs; r++) {
+    counts[r] *= 2;
+    displs[r] *= 2;
+  }
+  fresh_pairs.resize(2 * fresh_length.size());
+  MPI_Allgatherv(mine.data(), 2 * n, MPI_LMP_TAGINT, fresh_pairs.data(), counts.data(), displs.data(),
                  MPI_LMP_TAGINT, world);
+}
+
+bigint FixPDBonds::cut_crossing(const pd_crack &crack, int groupbit)
+{
+  double **x0 = atom->x0;
+  const int *mask = atom->mask;
+  bigint mine = 0;
+  for (int i = 0; i < nowned; i++)
+    for (int k = 0; k < npartner[i]; k++) {
+      const int j = far[i][k];
+      if (r0[i][k] < 0.0 || !(mask[i] & groupbit) || !(mask[j] & groupbit)) continue;
+      double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+      domain->minimum_image(d[0], d[1], d[2]);
+      const double q[3] = {x0[i][0] + d[0], x0[i][1] + d[1], x0[i][2] + d[2]};
+      if (pd_crack_crosses(&crack, x0[i], q)) {
+        r0[i][k] = -r0[i][k];
+        mine++;
+      }
+    }
+  breaks_since_map += mine;
+  bigint total = 0;
+  MPI_Allreduce(&mine, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (total > 0) any_broken = 1;
+  return total;
+}
+
+void FixPDBonds::remember_cut(const std::string &fixid, const pd_crack &crack, int groupbit)
+{
+  for (PendingCut &c : pending_cuts)
+    if (c.fixid == fixid) {
+      c.crack = crack;
+      c.groupbit = groupbit;
+      return;
+    }
+  pending_cuts.push_back({fixid, crack, groupbit});
 }

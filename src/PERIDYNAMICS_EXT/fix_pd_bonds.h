@@ -13,10 +13,12 @@ FixStyle(pd/bonds,FixPDBonds);
 
 #include "fix.h"
 
+#include <string>
+#include <vector>
+
 extern "C" {
 #include "pd_bonds.h"
-
-#include <vector>
+#include "pd_precrack.h"
 }
 
 namespace LAMMPS_NS {
@@ -32,8 +34,10 @@ class FixPDBonds : public Fix {
   void init_list(int, class NeighList *) override;
   void setup_post_neighbor() override;
   void post_neighbor() override;
-  void min_post_neighbor() override { map_partners(false); }
+  void min_post_neighbor() override { post_neighbor(); }
   void post_run() override;
+  void setup(int) override;
+  void end_of_step() override;
   double compute_scalar() override;
   double memory_usage() override;
 
@@ -54,7 +58,6 @@ class FixPDBonds : public Fix {
   void unpack_reverse_comm(int, int *, double *) override;
 
   void set_owner(PairPD *pair) { owner = pair; }
-  PairPD *get_owner() const { return owner; }
   // what the families were built for (pair style, horizons, weights ...)
   double built_for() const { return family_key; }
   void set_family_key(double key) { if (!built) family_key = key; }
@@ -74,7 +77,11 @@ class FixPDBonds : public Fix {
   double local_dissipated_joule() const { return dissipated_joule; }
   // broken bonds: the sign of the reference length (pd_failure.h)
   double *len0_data() const { return r0 ? r0[0] : nullptr; }
-  void add_broken(bigint n) { nbroken_local += n; }
+  void add_broken(bigint n)
+  {
+    nbroken_local += n;
+    breaks_since_map += n;
+  }
   bigint local_broken() const { return nbroken_local; }
   bigint local_lost() const { return nlost_local; }
   bool has_broken() const { return any_broken; }
@@ -90,6 +97,14 @@ class FixPDBonds : public Fix {
   bool unbreak_fresh(bigint step);
   void rebreak_fresh();
   void note_fresh(const int *idx, int n, bigint step, bool any);
+
+  // Break the intact bonds (both ends in the group) whose reference segment
+  // crosses the crack; returns how many, over all ranks.
+  bigint cut_crossing(const pd_crack &crack, int groupbit);
+  // A crack of fix 'fixid' known before the families exist: a restart file
+  // written before the first run carries it, and the families built from
+  // that file are cut by it.
+  void remember_cut(const std::string &fixid, const pd_crack &crack, int groupbit);
 
   // Sum a per-atom array's ghost entries onto their owners, or copy the
   // owners' entries to their ghosts; 'width' doubles per atom, at most 2.
@@ -115,7 +130,10 @@ class FixPDBonds : public Fix {
   double **weight;         // quadrature weight (use_weights only)
   double **history;        // per-bond history (nhistory > 0 only)
   int **far;               // far end as a local index (owned+ghost)
-  bigint nlost_local;      // bonds dropped because the partner was lost
+  bigint nlost_local;      // intact bonds lost (counted on rank 0)
+  bigint intact_at_map;    // intact bonds over all ranks at the last mapping (-1: none yet)
+  bigint breaks_since_map; // bonds this rank broke since then (fracture, pre-cracks)
+  bigint stored_total;     // bonds stored over all ranks at the last mapping
   bigint nlost_reported;   // the global count last warned about
   double dissipated;       // this rank's share of the dissipated energy
   double dissipated_joule; // the same in joules
@@ -124,6 +142,13 @@ class FixPDBonds : public Fix {
   double family_key;       // hash of the pair settings the families were built for
   bigint fresh_step;       // the step of the last evaluation that broke bonds (or broke none)
   std::vector<tagint> fresh_pairs;   // its broken bonds, owner and partner tags, all ranks
+  std::vector<double> fresh_length;  // the length of each when it broke
+  struct PendingCut {
+    std::string fixid;    // the pd/precrack fix of this run ("" when read from a restart file)
+    pd_crack crack;
+    int groupbit;
+  };
+  std::vector<PendingCut> pending_cuts;
   class NeighList *list;
   double *comm_array;
   int comm_width;
@@ -131,7 +156,17 @@ class FixPDBonds : public Fix {
 
   void build_families();
   void sign_fresh(double sign);
+  double current_length(int i, int k) const;
   void map_partners(bool setup);
+  void check_stored_partners();
+  bigint count_lost();
+  void report_bonds_by_type(const std::vector<bigint> &touching);
+  // the blow-up guard (fix_pd_bonds_guard.cpp)
+  double guard_step;        // the largest distance an atom may move in one step
+  void guard(bool forces_only);
+  std::string blow_up(int i, const char *what, double value);
+  bigint damaged;           // stored bond records found damaged (restart, exchange)
+  bigint damaged_example;   // the count one of them claimed
   void check_identities();
   void reference_sums();
   void remove_bond(int i, int k);

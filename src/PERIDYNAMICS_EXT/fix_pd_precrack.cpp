@@ -17,29 +17,31 @@
 #include "fix_pd_bonds.h"
 #include "pd_modify_lookup.h"
 
+#include <cmath>
 #include <cstring>
-
-extern "C" {
-#include "pd_precrack.h"
-}
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixPDPrecrack::FixPDPrecrack(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), patch(0), ncut(0), bonds(nullptr)
+    Fix(lmp, narg, arg), crack(), ncut(0), bonds(nullptr)
 {
   const bool is_segment = narg == 8 && strcmp(arg[3], "segment") == 0;
   const bool is_patch = narg == 13 && strcmp(arg[3], "patch") == 0;
   if (!is_segment && !is_patch)
     error->all(FLERR, "Illegal fix pd/precrack command: expected 'segment x1 y1 x2 y2' (2D) or "
                "'patch ox oy oz ax ay az bx by bz' (3D)");
-  patch = is_patch;
-  if (patch != (domain->dimension == 3))
-    error->all(FLERR, "Fix pd/precrack: '{}' is for {}D", arg[3], patch ? 3 : 2);
+  crack.patch = is_patch;
+  if (crack.patch != (domain->dimension == 3))
+    error->all(FLERR, "Fix pd/precrack: '{}' is for {}D", arg[3], crack.patch ? 3 : 2);
   double v[9] = {0};
-  for (int k = 0; k < narg - 4; k++) v[k] = utils::numeric(FLERR, arg[4 + k], false, lmp);
-  if (patch) {
+  for (int k = 0; k < narg - 4; k++) {
+    v[k] = utils::numeric(FLERR, arg[4 + k], false, lmp);
+    if (!std::isfinite(v[k]))
+      error->all(FLERR, "Fix pd/precrack: coordinate '{}' must be a finite number", arg[4 + k]);
+  }
+  double *a = crack.a, *b = crack.b, *c = crack.c;
+  if (crack.patch) {
     for (int d = 0; d < 3; d++) {
       a[d] = v[d];
       b[d] = v[3 + d];
@@ -47,13 +49,19 @@ FixPDPrecrack::FixPDPrecrack(LAMMPS *lmp, int narg, char **arg) :
     }
   } else {
     a[0] = v[0], a[1] = v[1], b[0] = v[2], b[1] = v[3];
-    a[2] = b[2] = c[0] = c[1] = c[2] = 0.0;
   }
+  // a crack of zero length or area would cut nothing without a word
+  const double area = crack.patch
+      ? sqrt(pow(b[1] * c[2] - b[2] * c[1], 2) + pow(b[2] * c[0] - b[0] * c[2], 2) + pow(b[0] * c[1] - b[1] * c[0], 2))
+      : sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]));
+  if (!(area > 0.0))
+    error->all(FLERR, "Fix pd/precrack: the crack has zero {} ({})", crack.patch ? "area" : "length",
+               crack.patch ? "its two edges are parallel or zero" : "its two ends coincide");
   // the crack must touch the box: a crack outside it is a typo
   double lo[3], hi[3];
   for (int d = 0; d < 3; d++) {
-    lo[d] = patch ? MIN(MIN(a[d], a[d] + b[d]), MIN(a[d] + c[d], a[d] + b[d] + c[d])) : MIN(a[d], b[d]);
-    hi[d] = patch ? MAX(MAX(a[d], a[d] + b[d]), MAX(a[d] + c[d], a[d] + b[d] + c[d])) : MAX(a[d], b[d]);
+    lo[d] = crack.patch ? MIN(MIN(a[d], a[d] + b[d]), MIN(a[d] + c[d], a[d] + b[d] + c[d])) : MIN(a[d], b[d]);
+    hi[d] = crack.patch ? MAX(MAX(a[d], a[d] + b[d]), MAX(a[d] + c[d], a[d] + b[d] + c[d])) : MAX(a[d], b[d]);
   }
   for (int d = 0; d < domain->dimension; d++)
     if (hi[d] < domain->boxlo[d] || lo[d] > domain->boxhi[d])
@@ -69,37 +77,17 @@ int FixPDPrecrack::setmask()
   return PRE_FORCE | MIN_PRE_FORCE;
 }
 
+// Before the families exist the store remembers the crack, so that a
+// restart file written now carries it (the families are built later).
 void FixPDPrecrack::init()
 {
   bonds = find_bond_store(lmp, "fix pd/precrack");
+  if (!bonds->is_built()) bonds->remember_cut(id, crack, groupbit);
 }
 
 void FixPDPrecrack::setup_pre_force(int)
 {
-  double **x0 = atom->x0;
-  const int *mask = atom->mask;
-  const pd_bond_view v = bonds->view();
-  double *len0 = bonds->len0_data();
-  bigint mine = 0;
-  for (int i = 0; i < v.nowner; i++)
-    for (int k = 0; k < v.count[i]; k++) {
-      const int idx = i * v.stride + k;
-      if (len0[idx] < 0.0) continue;
-      const int j = v.far[idx];
-      if (!(mask[i] & groupbit) || !(mask[j] & groupbit)) continue;   // both ends in the group
-      double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-      domain->minimum_image(d[0], d[1], d[2]);
-      const double p[3] = {x0[i][0], x0[i][1], x0[i][2]};
-      const double q[3] = {p[0] + d[0], p[1] + d[1], p[2] + d[2]};
-      if (patch ? pd_crosses_patch(p, q, a, b, c) : pd_crosses_segment(p, q, a, b)) {
-        len0[idx] = -len0[idx];
-        mine++;
-      }
-    }
-  bigint total = 0;
-  MPI_Allreduce(&mine, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  ncut += total;
-  if (ncut > 0) bonds->set_has_broken();
+  ncut += bonds->cut_crossing(crack, groupbit);
 }
 
 double FixPDPrecrack::compute_scalar()

@@ -13,6 +13,10 @@ FixStyle(pd/precrack,FixPDPrecrack);
 
 #include "fix.h"
 
+extern "C" {
+#include "pd_precrack.h"
+}
+
 namespace LAMMPS_NS {
 
 class FixPDPrecrack : public Fix {
@@ -24,8 +28,7 @@ class FixPDPrecrack : public Fix {
   double compute_scalar() override;
 
  private:
-  int patch;               // 0: 2D segment a-b; 1: 3D parallelogram o + u e1 + v e2
-  double a[3], b[3], c[3]; // segment ends a, b; or origin a and edges b, c
+  pd_crack crack;
   bigint ncut;             // bonds this crack broke (all ranks)
   class FixPDBonds *bonds;
 };

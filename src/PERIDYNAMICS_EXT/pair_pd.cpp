@@ -13,6 +13,7 @@
 #include "lattice.h"
 #include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <cmath>
@@ -22,6 +23,7 @@
 #include <cstring>
 
 extern "C" {
+#include "pd_contact.h"
 #include "pd_influence.h"
 #include "pd_material_file.h"
 #include "pd_timestep.h"
@@ -35,7 +37,8 @@ PairPD::PairPD(LAMMPS *lmp, const std::vector<std::string> &coef_names) :
     Pair(lmp), names(coef_names), coef(nullptr), legacy(0), recontact(1), law(PD_FAIL_NONE),
     ifail(-1), is0(-1), iGc(-1), ialpha(-1), model_dim(PD_3D), thickness(0.0), lattice_spacing(0.0),
     bonds(nullptr), released(nullptr), fresh(nullptr), maxfresh(0), s0_new(nullptr), nreleased(0),
-    report_pending(0), work(nullptr), nwork(0)
+    report_pending(0), work(nullptr), nwork(0), dt_estimate(0.0), radius(nullptr), nradius(0),
+    radius_step(-1)
 {
   names.insert(names.end(), {"fail", "s0", "Gc", "alpha"});
   ialpha = coef_index("alpha");
@@ -60,6 +63,7 @@ PairPD::~PairPD()
   memory->destroy(released);
   free(fresh);
   memory->destroy(s0_new);
+  memory->destroy(radius);
 }
 
 void PairPD::allocate()
@@ -76,6 +80,21 @@ void PairPD::allocate()
   }
   for (int i = 0; i <= n; i++)
     for (int j = 0; j <= n; j++) setflag[i][j] = 0;
+}
+
+PairPD *PairPD::active(Force *force)
+{
+  for (const char *s : {"pd/bond", "pd/ordinary"})
+    if (auto *p = dynamic_cast<PairPD *>(force->pair_match(s, 1))) return p;
+  return nullptr;
+}
+
+double PairPD::smallest_horizon() const
+{
+  double h = INFINITY;
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (setflag[t][t]) h = MIN(h, horizon(t, t));
+  return h;
 }
 
 bool PairPD::given(int p, int i, int j) const
@@ -95,7 +114,7 @@ int PairPD::coef_index(const std::string &name) const
 void PairPD::settings(int narg, char **arg)
 {
   legacy = 0;
-  recontact = 1;
+  recontact = RECONTACT_NEAR;
   model_dim = PD_3D;
   thickness = 0.0;
   const std::string style = style_name();
@@ -103,8 +122,17 @@ void PairPD::settings(int narg, char **arg)
   while (iarg < narg) {
     if (strcmp(arg[iarg], "legacy") == 0 || strcmp(arg[iarg], "norecontact") == 0) {
       if (arg[iarg][0] == 'l') legacy = 1;
-      else recontact = 0;
+      else recontact = RECONTACT_NONE;
       iarg++;
+      continue;
+    }
+    if (strcmp(arg[iarg], "recontact") == 0) {
+      const char *mode = iarg + 1 < narg ? arg[iarg + 1] : "";
+      if (strcmp(mode, "near") == 0) recontact = RECONTACT_NEAR;
+      else if (strcmp(mode, "any") == 0) recontact = RECONTACT_ANY;
+      else if (strcmp(mode, "none") == 0) recontact = RECONTACT_NONE;
+      else error->all(FLERR, "Pair style {}: 'recontact {}': expected near, any or none", style, mode);
+      iarg += 2;
       continue;
     }
     if (strcmp(arg[iarg], "plane") == 0 || strcmp(arg[iarg], "thickness") == 0) {
@@ -113,7 +141,9 @@ void PairPD::settings(int narg, char **arg)
       if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: '{}' needs a value", style, arg[iarg]);
       if (strcmp(arg[iarg], "thickness") == 0) {
         thickness = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-        if (!(thickness > 0.0)) error->all(FLERR, "Pair style {}: thickness must be positive", style);
+        if (!(thickness > 0.0) || !std::isfinite(thickness))
+          error->all(FLERR, "Pair style {}: thickness must be a positive finite number, got '{}'",
+                     style, arg[iarg + 1]);
       } else if (strcmp(arg[iarg + 1], "stress") == 0) model_dim = PD_PLANE_STRESS;
       else if (strcmp(arg[iarg + 1], "strain") == 0) model_dim = PD_PLANE_STRAIN;
       else error->all(FLERR, "Pair style {}: 'plane {}': expected stress or strain", style, arg[iarg + 1]);
@@ -157,47 +187,80 @@ void PairPD::coeff(int narg, char **arg)
     error->all(FLERR, "Incorrect args for pair coefficients");
 }
 
-// keyword/value pairs from arg[iarg] on, over the given values
+// A number that must be finite: overflow (1e400), inf and nan are refused
+// by the key's name, since they would reach the physics as NaN or zero.
+double PairPD::finite_number(const char *key, const char *text)
+{
+  const double v = utils::numeric(FLERR, text, false, lmp);
+  if (!std::isfinite(v))
+    error->all(FLERR, "Pair {} coeff: '{}' must be a finite number, got '{}'", style_name(), key, text);
+  return v;
+}
+
+// keyword/value pairs from arg[iarg] on, over the given values (a material
+// file's, or NaN); a key given twice on one line is an error
 std::vector<double> PairPD::parse_values(int narg, char **arg, int iarg, std::vector<double> values)
 {
   const std::string style = style_name();
-  while (iarg < narg && strcmp(arg[iarg], "fail") == 0) {
-    // fail stretch <s0> | fail stretch Gc <Gc> | fail energy [Gc <Gc>] |
-    // fail legacy <s00> <alpha> (LAMMPS PERI's rule, legacy mode)
-    if (iarg + 1 >= narg) error->all(FLERR, "Pair {} coeff: 'fail' needs a law: stretch, energy or legacy", style);
-    if (strcmp(arg[iarg + 1], "legacy") == 0) {
-      if (iarg + 3 >= narg) error->all(FLERR, "Pair {} coeff: 'fail legacy' needs s00 and alpha", style);
-      values[ifail] = PD_FAIL_LEGACY;
-      values[is0] = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-      values[ialpha] = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
-      iarg += 4;
+  std::vector<bool> seen(names.size(), false);
+  auto set = [&](int p, double v) {
+    if (seen[p])
+      error->all(FLERR, "Pair {} coeff: '{}' is given twice on one line", style, names[p]);
+    seen[p] = true;
+    values[p] = v;
+  };
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "nobond") == 0) {
+      // two types that must not bond (an impactor and its target)
+      set(0, 0.0);
+      iarg++;
       continue;
     }
-    if (strcmp(arg[iarg + 1], "stretch") == 0) values[ifail] = PD_FAIL_STRETCH;
-    else if (strcmp(arg[iarg + 1], "energy") == 0) values[ifail] = PD_FAIL_ENERGY;
-    else error->all(FLERR, "Pair {} coeff: unknown failure law '{}' (stretch, energy)", style, arg[iarg + 1]);
-    iarg += 2;
-    if (iarg + 1 < narg && strcmp(arg[iarg], "Gc") == 0) {
-      values[iGc] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (strcmp(arg[iarg], "fail") == 0) {
+      // fail stretch <s0> | fail stretch Gc <Gc> | fail energy [Gc <Gc>] |
+      // fail legacy <s00> <alpha> (LAMMPS PERI's rule, legacy mode)
+      if (iarg + 1 >= narg) error->all(FLERR, "Pair {} coeff: 'fail' needs a law: stretch, energy or legacy", style);
+      if (strcmp(arg[iarg + 1], "legacy") == 0) {
+        if (iarg + 3 >= narg) error->all(FLERR, "Pair {} coeff: 'fail legacy' needs s00 and alpha", style);
+        set(ifail, PD_FAIL_LEGACY);
+        set(is0, finite_number("s00", arg[iarg + 2]));
+        set(ialpha, finite_number("alpha", arg[iarg + 3]));
+        iarg += 4;
+        continue;
+      }
+      if (strcmp(arg[iarg + 1], "stretch") == 0) set(ifail, PD_FAIL_STRETCH);
+      else if (strcmp(arg[iarg + 1], "energy") == 0) set(ifail, PD_FAIL_ENERGY);
+      else error->all(FLERR, "Pair {} coeff: unknown failure law '{}' (stretch, energy, legacy)", style, arg[iarg + 1]);
       iarg += 2;
-    } else if (values[ifail] == PD_FAIL_STRETCH && iarg < narg && utils::is_double(arg[iarg])) {
-      values[is0] = utils::numeric(FLERR, arg[iarg], false, lmp);
-      iarg++;
+      if (iarg + 1 < narg && strcmp(arg[iarg], "Gc") == 0) {
+        set(iGc, finite_number("Gc", arg[iarg + 1]));
+        iarg += 2;
+      } else if (values[ifail] == PD_FAIL_STRETCH && iarg < narg && utils::is_double(arg[iarg])) {
+        set(is0, finite_number("s0", arg[iarg]));
+        iarg++;
+      }
+      continue;
     }
-  }
-  for (; iarg < narg; iarg += 2) {
-    if (strcmp(arg[iarg], "fail") == 0) return parse_values(narg, arg, iarg, values);
     const int p = coef_index(arg[iarg]);
     if (p < 0) {
       std::string known;
       for (auto &n : names) known += " " + n;
-      error->all(FLERR, "Pair {} coeff: unknown keyword '{}' (expected one of:{})", style_name(),
-                 arg[iarg], known);
+      const bool number = utils::is_double(arg[iarg]);
+      error->all(FLERR, "Pair {} coeff: {} '{}' (expected keyword/value pairs, keywords:{} nobond){}",
+                 style, number ? "a value where a keyword belongs:" : "unknown keyword", arg[iarg],
+                 known, number ? "; with 'file', give one material name per atom type" : "");
     }
     if (iarg + 1 >= narg)
-      error->all(FLERR, "Pair {} coeff: keyword '{}' needs a value", style_name(), arg[iarg]);
-    values[p] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      error->all(FLERR, "Pair {} coeff: keyword '{}' needs a value", style, arg[iarg]);
+    set(p, finite_number(arg[iarg], arg[iarg + 1]));
+    iarg += 2;
   }
+  // an s0 on the line decides the critical stretch, PERI's rule has its
+  // own: a material file's G_c is then not used
+  if ((seen[is0] || values[ifail] == PD_FAIL_LEGACY) && !seen[iGc]) values[iGc] = NAN;
+  if (seen[iGc] && std::isnan(values[ifail]))
+    error->all(FLERR, "Pair {} coeff: 'Gc' needs a failure law: 'fail energy Gc <Gc>' or 'fail "
+               "stretch Gc <Gc>'", style);
   return values;
 }
 
@@ -207,11 +270,26 @@ int PairPD::set_coeff_pairs(int ilo, int ihi, int jlo, int jhi, const std::vecto
   for (int i = ilo; i <= ihi; i++)
     for (int j = MAX(jlo, i); j <= jhi; j++) {
       for (size_t p = 0; p < names.size(); p++) coef[p][i][j] = values[p];
-      check_coeff(i, j);
+      if (values[0] == 0.0) set_nobond(i, j);
+      else check_coeff(i, j);
       setflag[i][j] = 1;
       count++;
     }
   return count;
+}
+
+// Horizon 0 ('nobond'): two types that never bond; such a line carries nothing else.
+void PairPD::set_nobond(int i, int j)
+{
+  if (i == j)
+    error->all(FLERR, "Pair {} coeff {} {}: 'nobond' (horizon 0) is for a line between two types; a "
+               "type's own horizon must be positive", style_name(), i, j);
+  for (size_t p = 1; p < names.size(); p++)
+    if (given(p, i, j))
+      error->all(FLERR, "Pair {} coeff {} {}: a 'nobond' line (horizon 0) takes no '{}': those "
+                 "types share no bonds", style_name(), i, j, names[p]);
+  coef[ifail][i][j] = PD_FAIL_NONE;
+  coef[is0][i][j] = INFINITY;
 }
 
 // pair_coeff * * file <path> <material per type> [model] [key value ...]:
@@ -221,21 +299,34 @@ void PairPD::read_material_file(int narg, char **arg)
 {
   const std::string style = style_name();
   const int ntypes = atom->ntypes;
+  // the files hold SI values, used as they are
+  if (strcmp(update->unit_style, "si") != 0)
+    error->all(FLERR, "Pair {} coeff file: material files hold SI values (Pa, J/m^2) and need 'units si'; "
+               "with units {} give the constants on the pair_coeff line", style, update->unit_style);
   if (strcmp(arg[0], "*") != 0 || strcmp(arg[1], "*") != 0)
     error->all(FLERR, "Pair {} coeff file: use 'pair_coeff * * file <path> <one material per type>'", style);
   if (narg < 4 + ntypes)
     error->all(FLERR, "Pair {} coeff file: expected a path and {} material names", style, ntypes);
+  for (int t = 1; t <= ntypes; t++)
+    if (coef_index(arg[3 + t]) >= 0 || strcmp(arg[3 + t], "fail") == 0 || strcmp(arg[3 + t], "nobond") == 0)
+      error->all(FLERR, "Pair {} coeff file: expected {} material names (one per atom type, NULL "
+                 "for a type without), but type {}'s is the keyword '{}'", style, ntypes, t, arg[3 + t]);
+  // rank 0 reads; every rank learns the outcome, so that the error is
+  // collective and reaches the log
   std::string text;
+  int len = -1;
   if (comm->me == 0) {
     FILE *fp = utils::open_potential(arg[3], lmp, nullptr);
-    if (!fp) error->one(FLERR, "Pair {} coeff file: cannot open '{}'", style, arg[3]);
-    char buf[4096];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, fp)) > 0) text.append(buf, n);
-    fclose(fp);
+    if (fp) {
+      char buf[4096];
+      size_t n;
+      while ((n = fread(buf, 1, sizeof buf, fp)) > 0) text.append(buf, n);
+      fclose(fp);
+      len = text.size();
+    }
   }
-  int len = text.size();
   MPI_Bcast(&len, 1, MPI_INT, 0, world);
+  if (len < 0) error->all(FLERR, "Pair {} coeff file: cannot open '{}'", style, arg[3]);
   text.resize(len);
   MPI_Bcast(&text[0], len, MPI_CHAR, 0, world);
 
@@ -287,15 +378,37 @@ double PairPD::init_one(int i, int j)
     coef[ifail][i][j] = MAX(coef[ifail][i][i], coef[ifail][j][j]);
   }
   // an interface with the stretch law but no s0 of its own: the smaller of
-  // the two materials' (MS07 eq. 31)
+  // the two materials' (MS07 eq. 31); with the energy law but no G_c of its
+  // own: the mean of theirs (NaN, no failure, if one type has none)
   if (std::isnan(coef[is0][i][j])) coef[is0][i][j] = MIN(coef[is0][i][i], coef[is0][j][j]);
+  if (coef[ifail][i][j] == PD_FAIL_ENERGY && std::isnan(coef[iGc][i][j]))
+    coef[iGc][i][j] = 0.5 * (coef[iGc][i][i] + coef[iGc][j][j]);
+  if (setflag[i][j] && coef[ifail][i][j] == PD_FAIL_ENERGY && std::isnan(coef[iGc][i][j]))
+    error->all(FLERR, "Pair {} coeff {} {}: 'fail energy' needs 'Gc <Gc>' here, or both types' own "
+               "G_c to mix", style_name(), i, j);
   for (size_t p = 0; p < names.size(); p++) coef[p][j][i] = coef[p][i][j];
   return horizon(i, j);
+}
+
+// Two pd/ material sub-styles of a hybrid would share one bond store
+// (pair_match's nsub = 2 gives the second instance, or the only one).
+void PairPD::check_one_material_style()
+{
+  auto twice = [&](const char *s) {
+    Pair *second = force->pair_match(s, 1, 2);
+    return second && second != force->pair_match(s, 1, 1);
+  };
+  const bool two = twice("pd/bond") || twice("pd/ordinary") ||
+      (force->pair_match("pd/bond", 1, 1) && force->pair_match("pd/ordinary", 1, 1));
+  if (utils::strmatch(force->pair_style, "^hybrid") && two)
+    error->all(FLERR, "Pair {}: one pd/ material style per simulation (they would share the "
+               "bond families); use one style with several atom types", style_name());
 }
 
 void PairPD::init_style()
 {
   const std::string style = style_name();
+  check_one_material_style();
   // interface pairs not given explicitly are mixed now (LAMMPS mixes them
   // after init_style), so that the horizons and the bond fingerprint below
   // are complete; init_one is idempotent
@@ -345,6 +458,14 @@ void PairPD::init_style()
     error->all(FLERR, "Pair {}: horizon {} is not larger than the particle spacing {} ({}): "
                "families would have almost no bonds; use about 3 spacings", style, hmin, maxspacing,
                dim() == 3 ? "cube root of the volume" : "square root of volume / thickness");
+  // a horizon longer than the whole box bonds every particle to every
+  // other (a unit slip), and LAMMPS would stop in its neighbor binning
+  double side = 0.0;
+  for (int d = 0; d < domain->dimension; d++) side = MAX(side, domain->prd[d]);
+  if (cutmax > side)
+    error->all(FLERR, "Pair {}: horizon {} is longer than the whole box (largest side {}): every "
+               "particle would bond to every other; a horizon is usually about 3 particle "
+               "spacings (check its units)", style, cutmax, side);
   for (int d = 0; d < domain->dimension; d++)
     if (domain->periodicity[d] && domain->prd[d] <= 2.0 * cutmax)
       error->all(FLERR, "Pair {}: periodic box length {} is not larger than twice the horizon {}",
@@ -370,17 +491,6 @@ void PairPD::init_style()
   }
   bonds = dynamic_cast<FixPDBonds *>(modify->fix[ifix]);
   if (!bonds) error->all(FLERR, "Fix ID {} is taken by a fix that is not pd/bonds", FIX_ID);
-  // two pd/ material sub-styles of a hybrid would share one bond store
-  // (pair_match's nsub = 2 gives the second instance, or the only one)
-  auto twice = [&](const char *s) {
-    Pair *second = force->pair_match(s, 1, 2);
-    return second && second != force->pair_match(s, 1, 1);
-  };
-  const bool two = twice("pd/bond") || twice("pd/ordinary") ||
-      (force->pair_match("pd/bond", 1, 1) && force->pair_match("pd/ordinary", 1, 1));
-  if (utils::strmatch(force->pair_style, "^hybrid") && two)
-    error->all(FLERR, "Pair {}: one pd/ material style per simulation (they would share the "
-               "bond families); use one style with several atom types", style);
   bonds->set_owner(this);
   bonds->set_family_key(family_key());
   if (bonds->is_built() && bonds->built_for() != family_key())
@@ -408,9 +518,14 @@ double PairPD::family_key() const
 void PairPD::check_failure(int i, int j, double E, double nu)
 {
   const std::string style = style_name();
+  const auto refuse = [&](int p, const char *why) {
+    if (given(p, i, j))
+      error->all(FLERR, "Pair {} coeff {} {}: '{}' {}", style, i, j, names[p], why);
+  };
   if (!given(ifail, i, j)) {
     if (given(is0, i, j) && !std::isinf(value(is0, i, j)))
       error->all(FLERR, "Pair {} coeff {} {}: s0 needs 'fail stretch'", style, i, j);
+    refuse(ialpha, "belongs to 'fail legacy <s00> <alpha>'");
     coef[ifail][i][j] = PD_FAIL_NONE;
     coef[is0][i][j] = INFINITY;
     return;
@@ -419,8 +534,10 @@ void PairPD::check_failure(int i, int j, double E, double nu)
     if (!legacy)
       error->all(FLERR, "Pair {} coeff {} {}: 'fail legacy' reproduces PERI and needs the 'legacy' "
                  "pair style keyword", style, i, j);
+    refuse(iGc, "has no use with 'fail legacy' (PERI's rule takes s00 and alpha)");
     return;
   }
+  refuse(ialpha, "belongs to 'fail legacy <s00> <alpha>'");
   if (given(iGc, i, j) && !(value(iGc, i, j) > 0.0))
     error->all(FLERR, "Pair {} coeff {} {}: Gc must be positive, got {}", style, i, j, value(iGc, i, j));
   if (value(ifail, i, j) == PD_FAIL_STRETCH) {
@@ -428,9 +545,14 @@ void PairPD::check_failure(int i, int j, double E, double nu)
       if (!(value(is0, i, j) > 0.0))
         error->all(FLERR, "Pair {} coeff {} {}: critical stretch s0 must be positive, got {}", style,
                    i, j, value(is0, i, j));
+      if (given(iGc, i, j))
+        error->all(FLERR, "Pair {} coeff {} {}: 'fail stretch' takes s0 or 'Gc <Gc>', not both",
+                   style, i, j);
     } else if (given(iGc, i, j)) {
+      // NaN when E is not known yet (an interface: from both materials in init_one)
       coef[is0][i][j] = pd_critical_stretch(dim(), model_dim == PD_PLANE_STRAIN, E, nu,
                                             horizon(i, j), value(iGc, i, j));
+      check_derived(is0, i, j);
     } else if (i == j) {
       error->all(FLERR, "Pair {} coeff {} {}: 'fail stretch' needs s0 or 'Gc <Gc>' (here or in "
                  "the material file)", style, i, j);
@@ -438,11 +560,23 @@ void PairPD::check_failure(int i, int j, double E, double nu)
       coef[is0][i][j] = NAN;    // from the two materials when mixed (init_one)
     }
   } else {
+    refuse(is0, "is the stretch law's; 'fail energy' takes 'Gc <Gc>'");
     coef[is0][i][j] = INFINITY;
-    if (!given(iGc, i, j))
+    // an interface without its own G_c takes the mean of its two types' (init_one)
+    if (i == j && !given(iGc, i, j))
       error->all(FLERR, "Pair {} coeff {} {}: 'fail energy' needs 'Gc <Gc>' (here or in the "
                  "material file)", style, i, j);
   }
+}
+
+// A coefficient derived from the inputs (micromodulus, critical stretch, Lame
+// constants) must come out finite and positive: extreme inputs overflow.
+void PairPD::check_derived(int p, int i, int j)
+{
+  const double v = value(p, i, j);
+  if (!std::isnan(v) && !(v > 0.0 && std::isfinite(v)))
+    error->all(FLERR, "Pair {} coeff {} {}: the inputs give {} = {}, not a positive finite number; "
+               "check the magnitudes and units of the constants", style_name(), i, j, names[p], v);
 }
 
 bool PairPD::failing() const
@@ -457,7 +591,8 @@ pd_failure PairPD::failure_state()
   const int nall = atom->nlocal + atom->nghost;
   pd_failure f = {};
   f.law = law;
-  f.recontact = law == PD_FAIL_LEGACY ? 0 : recontact;    // PERI drops broken bonds
+  f.recontact = law == PD_FAIL_LEGACY ? 0 : recontact != RECONTACT_NONE;    // PERI drops broken bonds
+  f.contact_radius = f.recontact && recontact == RECONTACT_NEAR ? contact_radii() : nullptr;
   f.s0 = law == PD_FAIL_STRETCH || law == PD_FAIL_LEGACY ? coef[is0][0] : nullptr;
   if (law == PD_FAIL_LEGACY) {
     memory->grow(s0_new, nreleased, "pair:s0_new");
@@ -474,6 +609,24 @@ pd_failure PairPD::failure_state()
   // with half their force again, as the first time (see pd_ordinary.c)
   f.replay = law != PD_FAIL_LEGACY && bonds->unbreak_fresh(update->ntimestep);
   return f;
+}
+
+// Half the particle spacing of every atom (owned + ghost), as pd/contact's
+// node radius: where broken bonds start to push. Volumes are fixed, so the
+// array changes only when the ghosts do (reneighboring).
+const double *PairPD::contact_radii()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (nradius < nall || radius_step != neighbor->ncalls) {
+    if (atom->nmax > nradius) {
+      nradius = atom->nmax;
+      memory->destroy(radius);
+      memory->create(radius, nradius, "pair:radius");
+    }
+    for (int i = 0; i < nall; i++) radius[i] = pd_contact_radius(dim(), atom->vfrac[i], thickness);
+    radius_step = neighbor->ncalls;
+  }
+  return radius;
 }
 
 // The per-atom energy one evaluation dissipates (owned + ghost), zeroed.
@@ -559,9 +712,13 @@ void PairPD::report_setup()
   stable_dt_sum(work);
   bonds->sum_to_owners(work);
   double dtmin = INFINITY;
-  for (int i = 0; i < atom->nlocal; i++) dtmin = MIN(dtmin, pd_stable_dt(atom->rmass[i], work[i]));
+  // LAMMPS integrates a = ftm2v f / m: in metal, real, electron units the
+  // stiffness acts scaled by ftm2v (1 in si, cgs, lj, micro, nano)
+  for (int i = 0; i < atom->nlocal; i++)
+    dtmin = MIN(dtmin, pd_stable_dt(atom->rmass[i], force->ftm2v * work[i]));
   double dt;
   MPI_Allreduce(&dtmin, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
+  dt_estimate = dt;
   if (comm->me == 0) {
     std::string hs;
     for (int i = 1; i <= atom->ntypes; i++) hs += fmt::format(" {:.6g}", horizon(i, i));
@@ -570,6 +727,10 @@ void PairPD::report_setup()
                    "timestep {:.6g} is {:.3f} of it\n", style_name(), dims[model_dim],
                    dim() == 2 ? fmt::format(" (thickness {})", thickness) : "", hs,
                    legacy ? " (legacy PERI mode)" : "", dt, update->dt, update->dt / dt);
+    const char *rule[] = {"never (recontact none)", "once their particles touch (recontact near)",
+                          "whenever compressed, at any length (recontact any)"};
+    utils::logmesg(lmp, "{}: broken bonds push {}\n", style_name(),
+                   law == PD_FAIL_LEGACY ? "never (legacy PERI)" : rule[recontact]);
     report_extra();
   }
   if (update->dt > dt)

@@ -44,8 +44,14 @@ class PairPD : public Pair {
   // quadrature weight of a new bond (used only when uses_weights())
   virtual double bond_weight(int itype, int jtype, double r) const;
   FixPDBonds *bond_store() const { return bonds; }
+  // the pd/ material style of the current pair style (alone or a hybrid
+  // sub-style), or null
+  static PairPD *active(class Force *);
   double legacy_spacing() const { return legacy ? lattice_spacing : 0.0; }
   double plate_thickness() const { return thickness; }
+  // the stable time step estimate of this run's setup (0 before it)
+  double stable_dt() const { return dt_estimate; }
+  double smallest_horizon() const;
   // micromodulus of a bond-based solid as stiff as this material: the scale
   // of the contact stiffness (pd/contact)
   virtual double contact_micromodulus(int itype, int jtype) const = 0;
@@ -54,7 +60,8 @@ class PairPD : public Pair {
   std::vector<std::string> names;
   double ***coef;           // coef[p][i][j] for names[p]; NaN when not given
   int legacy;               // reproduce legacy PERI (partial volumes, ...)
-  int recontact;            // broken bonds still push in compression (T14 6.1.3)
+  enum { RECONTACT_NONE, RECONTACT_NEAR, RECONTACT_ANY };
+  int recontact;            // broken bonds push in compression (T14 6.1.3): once their ends touch, at any length, or never
   pd_fail_law law;          // the failure law of the style (one for all pairs)
   int ifail, is0, iGc, ialpha;  // indices of the failure coefficients
   pd_dimension model_dim;   // 3D, plane stress or plane strain
@@ -83,6 +90,10 @@ class PairPD : public Pair {
   void read_material_file(int narg, char **arg);
   int set_coeff_pairs(int ilo, int ihi, int jlo, int jhi, const std::vector<double> &values);
   std::vector<double> parse_values(int narg, char **arg, int iarg, std::vector<double> values);
+  double finite_number(const char *key, const char *text);
+  void set_nobond(int i, int j);
+  void check_one_material_style();
+  void check_derived(int p, int i, int j);
   pd_elastic elastic(int i, int j, const char *who);   // from K,G or E,nu coefficients
   double value(int p, int i, int j) const { return coef[p][i][j]; }
   bool given(int p, int i, int j) const;
@@ -102,6 +113,11 @@ class PairPD : public Pair {
   int maxfresh;
   double *s0_new;           // legacy failure: the new per-atom s0 (owned + ghost)
   int nreleased;
+  double dt_estimate;
+  double *radius;           // per-atom contact radius (owned + ghost)
+  int nradius;
+  bigint radius_step;       // the reneighboring it was computed for
+  const double *contact_radii();
 };
 
 }    // namespace LAMMPS_NS

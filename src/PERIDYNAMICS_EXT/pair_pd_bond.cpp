@@ -75,6 +75,7 @@ void PairPDBond::check_coeff(int i, int j)
   if (p == BULK) coef[MICROMODULUS][i][j] = pd_pmb_micromodulus_3d(value(BULK, i, j), delta);
   if (p == YOUNG) coef[MICROMODULUS][i][j] = pd_pmb_micromodulus(model_dim, E, delta, thickness);
 
+  check_derived(MICROMODULUS, i, j);
   // E of the bond-based solid, for the critical stretch from G_c
   const double Eb = value(MICROMODULUS, i, j) / pd_pmb_micromodulus(model_dim, 1.0, delta, thickness);
   if (given(ifail, i, j) && value(ifail, i, j) == PD_FAIL_ENERGY)

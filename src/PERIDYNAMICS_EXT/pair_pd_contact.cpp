@@ -81,8 +81,9 @@ void PairPDContact::settings(int narg, char **arg)
       error->all(FLERR, "Pair style pd/contact: unknown keyword '{}' (friction, legacy)", arg[iarg]);
     if (iarg + 1 >= narg) error->all(FLERR, "Pair style pd/contact: 'friction' needs a coefficient");
     friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    if (!(friction >= 0.0))
-      error->all(FLERR, "Pair style pd/contact: friction coefficient {} must not be negative", friction);
+    if (!(friction >= 0.0) || !std::isfinite(friction))
+      error->all(FLERR, "Pair style pd/contact: friction coefficient must be a finite number >= 0, "
+                 "got '{}'", arg[iarg + 1]);
   }
 }
 
@@ -100,7 +101,9 @@ void PairPDContact::coeff(int narg, char **arg)
     if (strcmp(arg[iarg], "stiffness") == 0) cs = v;
     else if (strcmp(arg[iarg], "distance") == 0) d = v;
     else error->all(FLERR, "Pair pd/contact coeff: unknown keyword '{}' (stiffness, distance)", arg[iarg]);
-    if (!(v > 0.0)) error->all(FLERR, "Pair pd/contact coeff: {} must be positive, got {}", arg[iarg], v);
+    if (!(v > 0.0) || !std::isfinite(v))
+      error->all(FLERR, "Pair pd/contact coeff: {} must be a positive finite number, got '{}'",
+                 arg[iarg], arg[iarg + 1]);
   }
   for (int i = ilo; i <= ihi; i++)
     for (int j = MAX(jlo, i); j <= jhi; j++) {
@@ -233,7 +236,8 @@ void PairPDContact::report_stable_dt()
       const double cs = legacy ? 15.0 * material->contact_micromodulus(ti, tj) * dist /
                                      material->horizon(ti, tj)
                                : stiffness[ti][tj];
-      const double dt = sqrt(2.0 * atom->rmass[i] * dist / (2.0 * dim * cs * atom->vfrac[i]));
+      // a = ftm2v f / m in every unit system
+      const double dt = sqrt(2.0 * atom->rmass[i] * dist / (2.0 * dim * force->ftm2v * cs * atom->vfrac[i]));
       mine = MIN(mine, dt);
     }
   }

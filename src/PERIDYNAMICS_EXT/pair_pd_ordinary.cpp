@@ -36,7 +36,7 @@ PairPDOrdinary::PairPDOrdinary(LAMMPS *lmp) :
     PairPD(lmp, {"horizon", "K", "G", "E", "nu", "m"}), influence(-1),
     per_atom_norm(0), order(0.5), bulk_volume(nullptr), lambda_bar(nullptr), mu_bar(nullptr),
     theta(nullptr), abstate(nullptr), nmax(0), strain(nullptr), nstrain(0), beta(nullptr),
-    crit(nullptr)
+    crit(nullptr), gc_pair(nullptr)
 {
 }
 
@@ -50,6 +50,7 @@ PairPDOrdinary::~PairPDOrdinary()
   memory->destroy(strain);
   memory->destroy(beta);
   memory->destroy(crit);
+  memory->destroy(gc_pair);
 }
 
 void PairPDOrdinary::settings(int narg, char **arg)
@@ -69,11 +70,13 @@ int PairPDOrdinary::parse_setting(int narg, char **arg, int iarg)
     return 2;
   }
   if (strcmp(arg[iarg], "influence") != 0) return 0;
-  if (iarg + 1 >= narg) error->all(FLERR, "Pair pd/ordinary: 'influence' needs a name");
+  if (iarg + 1 >= narg)
+    error->all(FLERR, "Pair pd/ordinary: 'influence' needs a name (constant, inverse, lps, tupek, "
+               "gaussian)");
   influence = pd_influence_from_name(arg[iarg + 1]);
   if (influence < 0)
     error->all(FLERR, "Pair pd/ordinary: unknown influence function '{}' (constant, inverse, lps, "
-               "tupek, gauss)", arg[iarg + 1]);
+               "tupek, gaussian)", arg[iarg + 1]);
   return 2;
 }
 
@@ -94,10 +97,9 @@ void PairPDOrdinary::check_coeff(int i, int j)
   if (!given(HORIZON, i, j) || value(HORIZON, i, j) <= 0.0)
     error->all(FLERR, "Pair pd/ordinary coeff {} {}: horizon missing or not positive", i, j);
   if (i != j) {
-    // interface bonds: their critical stretch may be given here (an s0, or
-    // by default the smaller of the two materials')
-    if (given(is0, i, j) || !given(ifail, i, j)) check_failure(i, j, NAN, NAN);
-    else coef[is0][i][j] = NAN;
+    // interface bonds: their own failure (s0, or G_c: the critical stretch
+    // follows in init_one, when both materials are known), else mixed
+    check_failure(i, j, NAN, NAN);
     return;
   }
   for (int p : {BULK, SHEAR, YOUNG})
@@ -109,11 +111,28 @@ void PairPDOrdinary::check_coeff(int i, int j)
   coef[SHEAR][i][j] = m.G;
   coef[YOUNG][i][j] = m.E;
   coef[POISSON][i][j] = m.nu;
+  for (int p : {BULK, SHEAR, YOUNG}) check_derived(p, i, j);
   check_failure(i, j, m.E, m.nu);
   if (!given(ORDER, i, j)) coef[ORDER][i][j] = 0.5;
   if (!(value(ORDER, i, j) <= 1.0 && value(ORDER, i, j) >= -4.0))
     error->all(FLERR, "Pair pd/ordinary coeff {} {}: strain order m = {} is outside [-4, 1]", i, j,
                value(ORDER, i, j));
+}
+
+// An interface with the stretch law and its own G_c: the critical stretch
+// of bond-based elasticity (MS07 eq. 28-29) for the two materials' mean E
+// and nu, as for a type's own bonds.
+double PairPDOrdinary::init_one(int i, int j)
+{
+  if (i != j && setflag[i][j] && value(ifail, i, j) == PD_FAIL_STRETCH && std::isnan(value(is0, i, j)) &&
+      given(iGc, i, j)) {
+    coef[is0][i][j] = pd_critical_stretch(dim(), model_dim == PD_PLANE_STRAIN,
+                                          0.5 * (value(YOUNG, i, i) + value(YOUNG, j, j)),
+                                          0.5 * (value(POISSON, i, i) + value(POISSON, j, j)),
+                                          horizon(i, j), value(iGc, i, j));
+    check_derived(is0, i, j);
+  }
+  return PairPD::init_one(i, j);
 }
 
 void PairPDOrdinary::init_style()
@@ -127,6 +146,7 @@ void PairPDOrdinary::init_style()
     per_atom_norm = 1;
     if (dim() != 3) error->all(FLERR, "Pair pd/ordinary legacy reproduces peri/lps, which is 3D");
   }
+  check_one_material_style();
   order = coef[ORDER][1][1];
   for (int i = 1; i <= atom->ntypes; i++)
     if (coef[ORDER][i][i] != order)
@@ -182,20 +202,27 @@ void PairPDOrdinary::setup_run()
     for (int i = 0; i < atom->nlocal; i++) mine[atom->type[i]] = MAX(mine[atom->type[i]], work[i]);
     MPI_Allreduce(mine.data(), moment.data(), ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
   }
-  for (int t = 1; t <= ntypes; t++) {
-    beta[t] = 0.0;
-    if (law == PD_FAIL_ENERGY && coef[ifail][t][t] == PD_FAIL_ENERGY) {
+  // beta per unit G_c, calibrated on each type's lattice; every bond takes
+  // the G_c of its type pair (an interface has its own)
+  memory->destroy(gc_pair);
+  memory->create(gc_pair, (ntypes + 1) * (ntypes + 1), "pair:gc_pair");
+  for (int t = 0; t <= ntypes; t++) beta[t] = 0.0;
+  for (int ti = 0; ti <= ntypes; ti++)
+    for (int tj = 0; tj <= ntypes; tj++) {
+      const bool fails = ti && tj && law == PD_FAIL_ENERGY && coef[ifail][ti][tj] == PD_FAIL_ENERGY &&
+          std::isfinite(coef[iGc][ti][tj]);
+      gc_pair[ti * (ntypes + 1) + tj] = fails ? coef[iGc][ti][tj] : INFINITY;
+      if (!fails) continue;
       // the continuum integral must exist (T14 eq. 6.1-6.2) ...
-      if (pd_energy_failure_beta((pd_influence_kind) influence, dim(), coef[HORIZON][t][t], 1.0) < 0.0)
+      if (pd_energy_failure_beta((pd_influence_kind) influence, dim(), coef[HORIZON][ti][tj], 1.0) < 0.0)
         error->all(FLERR, "Pair pd/ordinary: 'fail energy' with influence {} in 2D: the G_c "
                    "integral diverges (T14 eq. 6.2); use influence constant or tupek",
                    pd_influence_name((pd_influence_kind) influence));
-      // ... and beta is calibrated on the lattice itself
-      beta[t] = pd_energy_failure_beta_lattice(dim(), coef[iGc][t][t], bulk_volume[t], moment[t]);
-    } else if (law == PD_FAIL_ENERGY) {
-      beta[t] = INFINITY;    // this type's bonds do not fail
     }
-  }
+  // ... and beta is calibrated on the lattice itself
+  if (law == PD_FAIL_ENERGY)
+    for (int t = 1; t <= ntypes; t++)
+      beta[t] = pd_energy_failure_beta_lattice(dim(), 1.0, bulk_volume[t], moment[t]);
   for (int t = 1; t <= ntypes; t++) {
     pd_elastic m;
     pd_elastic_from_K_G(coef[BULK][t][t], coef[SHEAR][t][t], &m);
@@ -259,6 +286,7 @@ void PairPDOrdinary::compute(int eflag, int vflag)
   if (law == PD_FAIL_ENERGY) {
     // beta N is fixed per atom: ghosts need it again only after reneighboring
     for (int i = 0; i < nlocal; i++) crit[i] = beta[type[i]] * norm(i);
+    st.gc = gc_pair;
     if (neighbor->ago == 0) bonds->copy_to_ghosts(crit);
   }
   pd_ordinary_forces(&v, &st, fp, atom->type, atom->x[0], atom->vfrac, atom->f[0], evflag ? &t : nullptr);
@@ -286,11 +314,13 @@ void PairPDOrdinary::report_extra()
   for (int t = 1; t <= atom->ntypes; t++)
     lame += fmt::format(" type {}: lambda_bar {:.4g} mu_bar {:.4g};", t, lambda_bar[t], mu_bar[t]);
   if (law == PD_FAIL_ENERGY)
-    for (int t = 1; t <= atom->ntypes; t++)
-      if (std::isfinite(beta[t]) && beta[t] > 0.0)
-        lame += fmt::format(" energy failure beta {:.4g} (continuum {:.4g});", beta[t],
+    for (int t = 1; t <= atom->ntypes; t++) {
+      const double gc = gc_pair[t * (atom->ntypes + 1) + t];
+      if (std::isfinite(gc))
+        lame += fmt::format(" type {} energy failure beta {:.4g} (continuum {:.4g});", t, beta[t] * gc,
                             pd_energy_failure_beta((pd_influence_kind) influence, dim(),
-                                                   coef[HORIZON][t][t], coef[iGc][t][t]));
+                                                   coef[HORIZON][t][t], gc));
+    }
   utils::logmesg(lmp, "pd/ordinary: strain order m = {}, influence {}, {};{}\n", order,
                  pd_influence_name((pd_influence_kind) influence),
                  per_atom_norm ? "normalized per atom (surface correction)"

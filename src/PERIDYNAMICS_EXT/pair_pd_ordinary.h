@@ -41,11 +41,13 @@ class PairPDOrdinary : public PairPD {
   int nmax;
   double *strain;      // per-bond strain, reused by the force pass (m != 1/2)
   bigint nstrain;
-  double *beta;        // per type: energy-failure beta (T14 eq. 6.3), 0 without
-  double *crit;        // per atom beta N (energy law; owned + ghost)
+  double *beta;        // per type: energy-failure beta (T14 eq. 6.3) for G_c = 1
+  double *crit;        // per atom beta N for G_c = 1 (energy law; owned + ghost)
+  double *gc_pair;     // per type pair G_c of the energy law (+inf: no failure)
 
   int parse_setting(int, char **, int) override;
   void check_coeff(int, int) override;
+  double init_one(int, int) override;
   bool between_types(int) const override;
   int uses_weights() const override { return 1; }
   void stable_dt_sum(double *) override;

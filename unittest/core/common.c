@@ -103,7 +103,7 @@ void check_momentum(const char *name, const lattice *l, const double *x,
   free(f);
 }
 
-double classical_energy(double lambda, double mu, const double e[3][3])
+double classical_energy(double lambda, double mu, double e[3][3])
 {
   const double tr = e[0][0] + e[1][1] + e[2][2];
   double ee = 0.0;

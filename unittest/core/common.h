@@ -18,7 +18,7 @@ void check_objectivity(const char *name, const lattice *l, const double *x,
 void check_momentum(const char *name, const lattice *l, const double *x,
                     evaluator eval, void *ctx);
 /* Classical isotropic energy density lambda/2 tr(e)^2 + mu e:e. */
-double classical_energy(double lambda, double mu, const double e[3][3]);
+double classical_energy(double lambda, double mu, double e[3][3]);
 /* x0 plus a random displacement of amplitude amp (deterministic). */
 void random_displacement(const lattice *l, double amp, unsigned seed, double *x);
 

@@ -67,7 +67,7 @@ int lattice_center(const lattice *l)
   return is2d ? c + l->n * c : c + l->n * (c + l->n * c);
 }
 
-void lattice_strain(const lattice *l, const double eps[3][3], double *x)
+void lattice_strain(const lattice *l, double eps[3][3], double *x)
 {
   for (int a = 0; a < l->natoms; a++)
     for (int r = 0; r < 3; r++) {
@@ -77,7 +77,7 @@ void lattice_strain(const lattice *l, const double eps[3][3], double *x)
     }
 }
 
-void rotate(const double R[3][3], int n, const double *in, double *out)
+void rotate(double R[3][3], int n, const double *in, double *out)
 {
   for (int a = 0; a < n; a++)
     for (int r = 0; r < 3; r++)

@@ -23,11 +23,14 @@ void lattice_free(lattice *l);
 pd_bond_view lattice_view(const lattice *l);
 int lattice_center(const lattice *l);
 
+/* The 3x3 arguments are not const: ISO C before C23 does not convert a
+ * double[3][3] argument to a const one without a cast. */
+
 /* Displacement of a uniform small strain eps (3x3, symmetric) about x0. */
-void lattice_strain(const lattice *l, const double eps[3][3], double *x);
+void lattice_strain(const lattice *l, double eps[3][3], double *x);
 
 /* Rigid rotation of positions and vectors by the rotation matrix R. */
-void rotate(const double R[3][3], int n, const double *in, double *out);
+void rotate(double R[3][3], int n, const double *in, double *out);
 void rotation_matrix(double ax, double ay, double az, double R[3][3]);
 
 /* Deterministic uniform random numbers in [-1, 1). */

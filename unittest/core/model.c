@@ -62,7 +62,8 @@ static double ordinary_run(const lattice *l, double lambda, double mu, double or
   double *strain = malloc(sizeof(double) * (size_t) l->stride * n);
   /* use the per-bond strain cache on odd calls, so both paths are tested */
   static int calls;
-  pd_ordinary_state st = {order, sum, ab, (calls++ & 1) ? strain : NULL, 1, crit};
+  static const double unit_gc = 1.0; /* crit is beta N for the whole G_c */
+  pd_ordinary_state st = {order, sum, ab, (calls++ & 1) ? strain : NULL, 1, crit, crit ? &unit_gc : NULL};
   pd_ordinary_dilatation(&v, &st, fail, x, l->vol);
   for (int i = 0; i < n; i++) {
     const pd_ordinary_atom_out o = pd_ordinary_atom(lambda, mu, dim / m[i], sum[i]);

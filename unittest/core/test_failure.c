@@ -6,6 +6,7 @@
 #include "model.h"
 #include "pd_bond_based.h"
 #include "pd_failure.h"
+#include "pd_macros.h"
 #include "pd_params.h"
 #include "pd_precrack.h"
 
@@ -19,7 +20,7 @@ int main(void)
    * 2D value pi delta Gc / 16, and 16 delta Gc / 63 in 3D (eq. 6.1 gives
    * 63 beta / (32 delta) for the one-sided integral: no factor pi). */
   check_rel("2D Tupek beta = pi delta Gc / 16 (T14)", pd_energy_failure_beta(PD_INFLUENCE_TUPEK, 2, delta, Gc),
-            M_PI * delta * Gc / 16.0, 1e-8);
+            PD_PI * delta * Gc / 16.0, 1e-8);
   check_rel("3D Tupek beta = 16 delta Gc / 63", pd_energy_failure_beta(PD_INFLUENCE_TUPEK, 3, delta, Gc),
             16.0 * delta * Gc / 63.0, 1e-8);
   /* constant omega, closed forms: 3D omega = 9 / (4 pi delta^3),
@@ -28,7 +29,7 @@ int main(void)
   check_rel("3D constant beta = 4 delta Gc / 9", pd_energy_failure_beta(PD_INFLUENCE_CONSTANT, 3, delta, Gc),
             4.0 * delta * Gc / 9.0, 1e-8);
   check_rel("2D constant beta = pi delta Gc / 8", pd_energy_failure_beta(PD_INFLUENCE_CONSTANT, 2, delta, Gc),
-            M_PI * delta * Gc / 8.0, 1e-8);
+            PD_PI * delta * Gc / 8.0, 1e-8);
   check_true("2D inverse influence: G_c integral diverges (refused)",
              pd_energy_failure_beta(PD_INFLUENCE_INVERSE, 2, delta, Gc) < 0.0);
   /* critical stretch from G_c, MS07 eq. 29 in 3D */
@@ -80,11 +81,11 @@ int main(void)
      * lambda/2 (cut dilatation)^2, zero here with lambda_bar = 0). */
     const pd_lame b0 = {0.0, 5e9};
     const double s = 1e-2;
-    const double e[3][3] = {{s, 0, 0}, {0, s, 0}, {0, 0, s}};
+    double e[3][3] = {{s, 0, 0}, {0, s, 0}, {0, 0, s}};
     lattice_strain(&l, e, x);
     double *crit = calloc(n, sizeof(double));
     double *len0 = l.len0;
-    pd_failure fail = {PD_FAIL_ENERGY, 1, NULL, len0, NULL, 0.0, 0.0, 0};
+    pd_failure fail = {.law = PD_FAIL_ENERGY, .recontact = 1, .len0 = len0};
     for (int a = 0; a < n; a++) crit[a] = 1e-30; /* tiny beta N: everything in tension breaks */
     const double before = ordinary_eval_full(&l, b0.lambda, b0.mu, 0.5, m, NULL, NULL, x, f, NULL);
     /* bonds that fail break before their force acts: this evaluation
@@ -93,16 +94,16 @@ int main(void)
     long nb = 0;
     for (int a = 0; a < n; a++) nb += l.count[a];
     check_true("energy law: every bond in tension breaks", fail.nbroken == nb);
-    pd_failure after_fail = {PD_FAIL_ENERGY, 1, NULL, len0, NULL, 0.0, 0.0, 0};
+    pd_failure after_fail = {.law = PD_FAIL_ENERGY, .recontact = 1, .len0 = len0};
     const double after = ordinary_eval_full(&l, b0.lambda, b0.mu, 0.5, m, &after_fail, crit, x, f, NULL);
     check_rel("energy law: released energy = elastic energy lost (lambda_bar = 0)", fail.released_joule,
               before - after, 1e-12);
     check_true("broken bonds carry no tension afterwards", after == 0.0 && broken_now == 0.0 &&
                after_fail.nbroken == 0);
     /* recontact: compress instead, and the broken bonds push again */
-    const double ec[3][3] = {{-s, 0, 0}, {0, -s, 0}, {0, 0, -s}};
+    double ec[3][3] = {{-s, 0, 0}, {0, -s, 0}, {0, 0, -s}};
     lattice_strain(&l, ec, x);
-    pd_failure comp = {PD_FAIL_ENERGY, 1, NULL, len0, NULL, 0.0, 0.0, 0};
+    pd_failure comp = {.law = PD_FAIL_ENERGY, .recontact = 1, .len0 = len0};
     const double e_re = ordinary_eval_full(&l, b0.lambda, b0.mu, 0.5, m, &comp, crit, x, f, NULL);
     comp.recontact = 0;
     const double e_no = ordinary_eval_full(&l, b0.lambda, b0.mu, 0.5, m, &comp, crit, x, f, NULL);
@@ -127,7 +128,7 @@ int main(void)
     pd_bond_view v = lattice_view(&l);
     pd_pmb mat = {1, &c};
     double x[6] = {0, 0, 0, h * 1.009, 0, 0}, f[6] = {0};
-    pd_failure fail = {PD_FAIL_STRETCH, 1, &s0, l.len0, NULL, 0.0, 0.0, 0};
+    pd_failure fail = {.law = PD_FAIL_STRETCH, .recontact = 1, .s0 = &s0, .len0 = l.len0};
     pd_pmb_forces(&v, &mat, &fail, l.type, x, l.vol, f, NULL);
     check_true("PMB: below s0 nothing breaks", fail.nbroken == 0 && l.len0[0] > 0.0);
     x[3] = h * 1.011;

@@ -2,6 +2,7 @@
 #include "check.h"
 #include "pd_influence.h"
 #include "pd_kinematics.h"
+#include "pd_macros.h"
 
 int main(void)
 {
@@ -30,8 +31,8 @@ int main(void)
   const int n = 100000;
   for (int k = 0; k < n; k++) {
     const double r = (k + 0.5) * delta / n;
-    s2 += 2 * M_PI * r * pd_influence(PD_INFLUENCE_TUPEK, 2, r, delta) * delta / n;
-    s3 += 4 * M_PI * r * r * pd_influence(PD_INFLUENCE_TUPEK, 3, r, delta) * delta / n;
+    s2 += 2 * PD_PI * r * pd_influence(PD_INFLUENCE_TUPEK, 2, r, delta) * delta / n;
+    s3 += 4 * PD_PI * r * r * pd_influence(PD_INFLUENCE_TUPEK, 3, r, delta) * delta / n;
   }
   check_rel("2D Tupek influence integrates to 2", s2, 2.0, 1e-8);
   check_rel("3D Tupek influence integrates to 3", s3, 3.0, 1e-8);

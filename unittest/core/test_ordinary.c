@@ -33,7 +33,7 @@ int main(void)
     double *x = malloc(sizeof(double) * 3 * n), *f = malloc(sizeof(double) * 3 * n);
     double *psi = malloc(sizeof(double) * n), *theta = malloc(sizeof(double) * n);
     const double s = 1e-4;
-    const double dil[3][3] = {{s, 0, 0}, {0, s, 0}, {0, 0, s}};
+    double dil[3][3] = {{s, 0, 0}, {0, s, 0}, {0, 0, s}};
     lattice_strain(&l, dil, x);
     ordinary_eval(&l, bar.lambda, bar.mu, 0.5, x, f, psi, theta);
     /* Every bond has stretch s, and the weighted volume normalizes the sum

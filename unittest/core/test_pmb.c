@@ -26,7 +26,7 @@ int main(void)
     double *psi = malloc(sizeof(double) * l.natoms);
     const int ctr = lattice_center(&l);
     const double s = 1e-4;
-    const double dil[3][3] = {{s, 0, 0}, {0, s, 0}, {0, 0, s}};
+    double dil[3][3] = {{s, 0, 0}, {0, s, 0}, {0, 0, s}};
     lattice_strain(&l, dil, x);
     pmb_eval(&l, c, x, f, psi);
     /* Exact: psi = 1/4 c s^2 sum |xi| V over the family (stretch is s on
@@ -92,7 +92,7 @@ int main(void)
     double plastic = 0.0, x[6] = {0, 0, 0, h, 0, 0}, f[6];
     pd_bond_view v = lattice_view(&l);
     pd_pmb mat = {1, &c};
-    pd_microplastic mp = {&sy, &plastic, 0.0, 0.0};
+    pd_microplastic mp = {.sy = &sy, .plastic = &plastic};
     const double stretches[] = {1e-3, 2e-3, 3e-3, 2e-3, 0.0};
     double force[5];
     for (int k = 0; k < 5; k++) {
@@ -109,7 +109,7 @@ int main(void)
     check_rel("microplastic: plastic work = c sy |total plastic flow| |xi|", mp.dissipated,
               c * sy * (2e-3 + 1e-3) * h, 1e-9);
     double plastic2 = 0.0, g[6] = {0}, f2[6] = {0};
-    pd_microplastic mp2 = {&big, &plastic2, 0.0, 0.0};
+    pd_microplastic mp2 = {.sy = &big, .plastic = &plastic2};
     x[3] = h * 1.01;
     pd_microplastic_forces(&v, &mat, &mp2, l.type, x, l.vol, g, NULL);
     pd_pmb_forces(&v, &mat, NULL, l.type, x, l.vol, f2, NULL);

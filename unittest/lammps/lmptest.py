@@ -85,6 +85,24 @@ def log_value(out, pattern):
     return float(m.group(1)) if m else math.nan
 
 
+def replace_exact(text, old, new, count=1):
+    """text with `old` replaced by `new`, which must occur exactly `count`
+    times: an edit of an input deck that no longer matches would otherwise
+    leave the deck unchanged and the test testing something else."""
+    found = text.count(old)
+    if found != count:
+        raise ValueError(f"replace_exact: expected {count} occurrence(s) of {old!r}, found {found}")
+    return text.replace(old, new)
+
+
+def sub_exact(pattern, new, text, count=1, flags=0):
+    """re.sub that must replace exactly `count` matches (see replace_exact)."""
+    result, found = re.subn(pattern, new, text, flags=flags)
+    if found != count:
+        raise ValueError(f"sub_exact: expected {count} match(es) of /{pattern}/, found {found}")
+    return result
+
+
 def finish():
     print(f"{_counts['pass']} passed, {_counts['fail']} failed")
     sys.exit(1 if _counts["fail"] else 0)

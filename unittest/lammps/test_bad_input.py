@@ -35,7 +35,7 @@ cases = [
     ("horizon below the spacing", block(6) + "pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon 4e-4\n" + RUN,
      "is not larger than the particle spacing"),
     ("volume never set (PERI's default is 1)",
-     block(6).replace(f"set group all volume {VOLUME}\n", "") + f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN,
+     replace_exact(block(6), f"set group all volume {VOLUME}\n", "") + f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN,
      "is not larger than the particle spacing 1"),
     ("an atom with zero volume", DATA + f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN,
      "some atoms have zero volume"),
@@ -43,7 +43,7 @@ cases = [
      "units si\natom_style atomic\nlattice sc 5e-4\nregion b block 0 4 0 4 0 4\ncreate_box 1 b\ncreate_atoms 1 box\n"
      f"mass 1 1.0\npair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN,
      "requires an atom style with per-atom volume"),
-    ("no atom map", block(6).replace("atom_modify map array\n", "") +
+    ("no atom map", replace_exact(block(6), "atom_modify map array\n", "") +
      f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN, "requires an atom map"),
     ("newton off", "newton off\n" + block(6) + f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN,
      "needs 'newton on'"),
@@ -101,13 +101,154 @@ cases = [
      "E = -7e+10 must be positive"),
     ("strain order missing its value", block(6) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.2 horizon {H} m\n",
      "keyword 'm' needs a value"),
-    ("legacy without a lattice", DATA.replace("zero.data", "ok.data") +
+    ("legacy without a lattice", replace_exact(DATA, "zero.data", "ok.data") +
      f"pair_style pd/bond legacy\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN, "need the lattice spacing"),
 ]
-for what, script, message in cases:
-    out, _ = run(script, d, expect_error=True)
-    errors = [l for l in out.splitlines() if l.startswith("ERROR")]
-    crashed = any(s in out for s in ("Segmentation", "signal", "Aborted", "nan"))
-    check(f"{what}: ERROR names it", bool(errors) and message in errors[0] and not crashed,
-          errors[0] if errors else out.strip().splitlines()[-1] if out.strip() else "no output")
+
+# Issue 9: every numeric input finite and in range, every key a line cannot
+# use refused, material files checked, messages that say what is wrong.
+open(f"{d}/inf.pd", "w").write("material glass\n  density 2500\n  E inf\n  nu 0.2\nend\n")
+open(f"{d}/twice.pd", "w").write("material glass\n  density 2500\n  E 7e10\n  nu 0.2\n  E 7e10\nend\n")
+open(f"{d}/block2.pd", "w").write("material glass\n  E 7e10\n  nu 0.2\nend\nmaterial glass\n  E 1e9\nend\n")
+open(f"{d}/long.pd", "w").write("material glass\n  E 7e10\n  nu 0.2\n# " + "x" * 600 + " E 1e6\n  density -1\nend\n")
+TWO_TYPES = ("units si\nboundary s s s\natom_style peri\natom_modify map array\nlattice sc 5e-4\n"
+             "region b block 0 4 0 4 0 4\ncreate_box 2 b\ncreate_atoms 1 box\nset group all volume 1.25e-10\n"
+             "set group all density 1000\n")
+ORD = "pair_style pd/ordinary\npair_coeff * * "
+BOND = "pair_style pd/bond\npair_coeff * * pmb "
+OK_ORD = f"E 1e9 nu 0.25 horizon {H}"
+CONTACT = "pair_style pd/contact\npair_coeff * * "
+cases += [
+    # overflow, inf, nan, words: LAMMPS refuses words and nan/inf spelled out,
+    # we refuse what overflows to inf (1e400), by the key's name
+    ("K overflows", block(6) + BOND + f"K 1e400 horizon {H}\n", "'K' must be a finite number"),
+    ("micromodulus overflows", block(6) + BOND + f"c 1e400 horizon {H}\n", "'c' must be a finite number"),
+    ("E overflows", block(6) + ORD + f"E 1e400 nu 0.25 horizon {H}\n", "'E' must be a finite number"),
+    ("E spelled inf", block(6) + ORD + f"E inf nu 0.25 horizon {H}\n", "inf"),
+    ("E spelled nan", block(6) + ORD + f"E nan nu 0.25 horizon {H}\n", "nan"),
+    ("E a word", block(6) + ORD + f"E glass nu 0.25 horizon {H}\n", "glass"),
+    ("G overflows", block(6) + ORD + f"K 1e9 G 1e400 horizon {H}\n", "'G' must be a finite number"),
+    ("nu overflows", block(6) + ORD + f"E 1e9 nu -1e400 horizon {H}\n", "'nu' must be a finite number"),
+    ("horizon overflows", block(6) + ORD + "E 1e9 nu 0.25 horizon 1e400\n", "'horizon' must be a finite number"),
+    ("m overflows", block(6) + ORD + f"{OK_ORD} m 1e400\n", "'m' must be a finite number"),
+    ("s0 overflows", block(6) + ORD + f"{OK_ORD} fail stretch 1e400\n", "'s0' must be a finite number"),
+    ("Gc overflows", block(6) + ORD + f"{OK_ORD} fail energy Gc 1e400\n", "'Gc' must be a finite number"),
+    ("stretch Gc overflows", block(6) + ORD + f"{OK_ORD} fail stretch Gc 1e400\n", "'Gc' must be a finite number"),
+    ("legacy s00 overflows", block(6) + f"pair_style pd/bond legacy\npair_coeff * * pmb K 1e9 horizon {H} fail legacy 1e400 0.25\n",
+     "'s00' must be a finite number"),
+    ("thickness overflows", PLATE + "pair_style pd/ordinary plane stress thickness 1e400\n",
+     "thickness must be a positive finite number, got '1e400'"),
+    ("thickness negative", PLATE + "pair_style pd/ordinary plane stress thickness -1e-3\n",
+     "thickness must be a positive finite number"),
+    ("thickness a word", PLATE + "pair_style pd/ordinary plane stress thickness thick\n", "thick"),
+    ("E so large the micromodulus overflows", block(6) + BOND + f"E 1e300 horizon {H}\n",
+     "the inputs give c = inf"),
+    ("Gc so small s0 underflows to 0", block(6) + ORD + f"{OK_ORD} fail stretch Gc 1e-320\n",
+     "the inputs give s0 = 0"),
+    ("contact stiffness overflows", block(6) + CONTACT + "stiffness 1e400\n",
+     "stiffness must be a positive finite number, got '1e400'"),
+    ("contact distance overflows", block(6) + CONTACT + "stiffness 1e20 distance 1e400\n",
+     "distance must be a positive finite number"),
+    ("friction overflows", block(6) + "pair_style pd/contact friction 1e400\n",
+     "friction coefficient must be a finite number >= 0, got '1e400'"),
+    ("friction negative", block(6) + "pair_style pd/contact friction -0.1\n",
+     "friction coefficient must be a finite number >= 0"),
+    ("pre-crack coordinate overflows", block(6) + ORD + f"{OK_ORD}\nfix c all pd/precrack patch 0 0 1e400 1 0 0 0 1 0\n",
+     "coordinate '1e400' must be a finite number"),
+    ("pre-crack of zero area", block(6) + ORD + f"{OK_ORD}\nfix c all pd/precrack patch 0 0 0 1e-3 0 0 2e-3 0 0\n",
+     "the crack has zero area"),
+    ("pre-crack of zero length", PLATE + "pair_style pd/ordinary plane stress thickness 1e-3\n"
+     f"pair_coeff * * {OK_ORD}\nfix c all pd/precrack segment 1e-3 1e-3 1e-3 1e-3\n", "the crack has zero length"),
+    ("pre-crack segment in 3D", block(6) + ORD + f"{OK_ORD}\nfix c all pd/precrack segment 0 0 1e-3 1e-3\n",
+     "'segment' is for 2D"),
+    ("pre-crack with a missing value", block(6) + ORD + f"{OK_ORD}\nfix c all pd/precrack patch 0 0 0 1 0 0 0 1\n",
+     "Illegal fix pd/precrack command"),
+    # keys a line cannot use
+    ("a key given twice", block(6) + ORD + f"E 1e9 E 2e9 nu 0.25 horizon {H}\n", "'E' is given twice on one line"),
+    ("horizon and nobond", TWO_TYPES + ORD + f"{OK_ORD}\npair_coeff 1 2 horizon {H} nobond\n",
+     "'horizon' is given twice on one line"),
+    ("nobond on a type's own line", TWO_TYPES + ORD + f"{OK_ORD}\npair_coeff 1 1 nobond\n",
+     "'nobond' (horizon 0) is for a line between two types"),
+    ("nobond with a failure law", TWO_TYPES + ORD + f"{OK_ORD}\npair_coeff 1 2 nobond fail stretch 0.01\n",
+     "a 'nobond' line (horizon 0) takes no 'fail'"),
+    ("alpha without the legacy law", block(6) + ORD + f"{OK_ORD} fail stretch 0.01 alpha 0.25\n",
+     "'alpha' belongs to 'fail legacy"),
+    ("Gc with the legacy law", block(6) + f"pair_style pd/bond legacy\npair_coeff * * pmb K 1e9 horizon {H} "
+     "fail legacy 0.001 0.25 Gc 10\n", "'Gc' has no use with 'fail legacy'"),
+    ("s0 with the energy law", block(6) + ORD + f"{OK_ORD} fail energy Gc 10 s0 0.01\n",
+     "'s0' is the stretch law's"),
+    ("s0 and Gc together", block(6) + ORD + f"{OK_ORD} fail stretch 0.01 Gc 10\n",
+     "takes s0 or 'Gc <Gc>', not both"),
+    ("Gc without a failure law", block(6) + ORD + f"{OK_ORD} Gc 10\n", "'Gc' needs a failure law"),
+    ("'fail' without a law", block(6) + ORD + f"{OK_ORD} fail\n", "'fail' needs a law"),
+    ("'fail legacy' missing alpha", block(6) + f"pair_style pd/bond legacy\npair_coeff * * pmb K 1e9 horizon {H} fail legacy 0.001\n",
+     "'fail legacy' needs s00 and alpha"),
+    ("legacy law without the legacy style", block(6) + BOND + f"K 1e9 horizon {H} fail legacy 0.001 0.25\n",
+     "needs the 'legacy' pair style keyword"),
+    ("'Gc' missing its value", block(6) + ORD + f"{OK_ORD} fail stretch Gc\n", "keyword 'Gc' needs a value"),
+    ("energy law on an interface without any G_c", TWO_TYPES + ORD + f"{OK_ORD}\npair_coeff 1 2 horizon {H} fail energy\n" + RUN,
+     "'fail energy' needs 'Gc <Gc>' here, or both types' own G_c"),
+    ("two failure laws", TWO_TYPES + "pair_style pd/ordinary\n"
+     f"pair_coeff 1 1 {OK_ORD} fail stretch 0.01\npair_coeff 2 2 {OK_ORD} fail energy Gc 10\n" + RUN,
+     "one failure law for all type pairs"),
+    ("a material on pd/bond's pmb line for pd/ordinary", block(6) + ORD + f"pmb {OK_ORD}\n", "unknown keyword 'pmb'"),
+    ("horizon missing", block(6) + ORD + "E 1e9 nu 0.25\n", "horizon missing or not positive"),
+    # style settings
+    ("recontact mode unknown", block(6) + "pair_style pd/ordinary recontact sideways\n",
+     "'recontact sideways': expected near, any or none"),
+    ("recontact without a mode", block(6) + "pair_style pd/ordinary recontact\n", "expected near, any or none"),
+    ("plane neither stress nor strain", PLATE + "pair_style pd/ordinary plane shear thickness 1e-3\n",
+     "'plane shear': expected stress or strain"),
+    ("surface correction not yes or no", block(6) + "pair_style pd/ordinary surface_correction maybe\n",
+     "surface_correction 'maybe': expected yes or no"),
+    ("the old influence name gauss", block(6) + "pair_style pd/ordinary influence gauss\n",
+     "unknown influence function 'gauss'"),
+    ("influence without a name (or taken by hybrid)", block(6) + "pair_style pd/ordinary influence\n",
+     "'influence' needs a name (constant, inverse, lps, tupek, gaussian)"),
+    ("legacy in 2D", PLATE + "pair_style pd/ordinary legacy plane stress thickness 1e-3\n"
+     f"pair_coeff * * {OK_ORD}\nset group all volume 2.5e-10\nset group all density 1000\n" + RUN,
+     "legacy reproduces peri/lps, which is 3D"),
+    ("legacy with m != 1/2", block(6) + f"pair_style pd/ordinary legacy\npair_coeff * * {OK_ORD} m 0\nlattice sc 5e-4\n" + RUN,
+     "which is m = 0.5"),
+    ("two pd/ material styles under hybrid", TWO_TYPES + "pair_style hybrid pd/ordinary pd/bond\n"
+     f"pair_coeff 1 1 pd/ordinary {OK_ORD}\npair_coeff 2 2 pd/bond pmb K 1e9 horizon {H}\n"
+     f"pair_coeff 1 2 pd/ordinary horizon {H}\n" + RUN, "one pd/ material style per simulation"),
+    # material files
+    ("too few material names", TWO_TYPES + f"pair_style pd/ordinary\npair_coeff * * file {MATERIALS} PMMA horizon {H}\n",
+     "expected 2 material names (one per atom type, NULL for a type without), but type 2's is the keyword 'horizon'"),
+    ("no material names", block(6) + f"pair_style pd/ordinary\npair_coeff * * file {MATERIALS}\n",
+     "expected a path and 1 material names"),
+    ("file on a single type pair", block(6) + f"pair_style pd/ordinary\npair_coeff 1 1 file {MATERIALS} PMMA\n",
+     "use 'pair_coeff * * file"),
+    ("material file missing", block(6) + f"pair_style pd/ordinary\npair_coeff * * file nosuch.pd PMMA horizon {H}\n",
+     "cannot open 'nosuch.pd'"),
+    ("material file value inf", block(6) + f"pair_style pd/ordinary\npair_coeff * * file inf.pd glass horizon {H}\n",
+     "must be a finite number"),
+    ("material file key twice", block(6) + f"pair_style pd/ordinary\npair_coeff * * file twice.pd glass horizon {H}\n",
+     "given twice"),
+    ("material block twice", block(6) + f"pair_style pd/ordinary\npair_coeff * * file block2.pd glass horizon {H}\n",
+     "glass defined twice (lines 1 and 5)"),
+    ("a long comment line is one line (the line after it is read)",
+     block(6) + f"pair_style pd/ordinary\npair_coeff * * file long.pd glass horizon {H}\n", "line 5: density"),
+    ("a horizon longer than the box (before: LAMMPS's bin error)", block(6, "s s s") + ORD + "E 1e9 nu 0.25 horizon 10\n" + RUN,
+     "horizon 10 is longer than the whole box"),
+    # other styles and misuse
+    ("compute pd/fracture with arguments", block(6) + ORD + f"{OK_ORD}\ncompute f all pd/fracture total\n",
+     "takes no arguments"),
+    ("fix pd/bonds by hand", block(6) + "fix mine all pd/bonds noweights history 0\n", "do not define it by hand"),
+    ("pd/contact unknown coefficient", block(6) + CONTACT + "stiffnes 1e20\n", "unknown keyword 'stiffnes'"),
+    ("pd/contact legacy with friction", block(8) + f"pair_style hybrid/overlay pd/bond legacy pd/contact legacy friction 0.2\n"
+     f"pair_coeff * * pd/bond pmb K 1e9 horizon {H}\npair_coeff * * pd/contact\ncomm_modify vel yes\n" + RUN,
+     "has no friction"),
+]
+# every case on 1 and 2 ranks: the ERROR must reach the output either way
+for ranks in (1, 2):
+    for what, script, message in cases:
+        out, _ = run(script, d, ranks=ranks, expect_error=True)
+        errors = [l for l in out.splitlines() if l.startswith("ERROR")]
+        crashed = any(s in out for s in ("Segmentation", "signal 11", "Aborted", "core dumped"))
+        check(f"{what} ({ranks} rank{'s' if ranks > 1 else ''}): ERROR names it",
+              bool(errors) and message in errors[0] and not crashed,
+              errors[0][:200] if errors else out.strip().splitlines()[-1][:200] if out.strip() else "no output")
+check(f"the catalogue has at least 80 cases ({len(cases)})", len(cases) >= 80)
 finish()

@@ -45,7 +45,7 @@ run {steps}
 
 
 # unwrapped coordinates: restart re-wraps atoms into the periodic y and z
-UNWRAPPED = DUMP.replace("id x y z", "id xu yu zu")
+UNWRAPPED = replace_exact(DUMP, "id x y z", "id xu yu zu")
 CONTACT = (f"pair_style hybrid/overlay pd/ordinary pd/contact\n"
            f"pair_coeff * * pd/ordinary E 3.5e9 nu 0.25 horizon {HORIZON}\npair_coeff * * pd/contact\n")
 out, rows = run(blocks(CONTACT, dump=DUMP.format(file="one")), d)
@@ -86,7 +86,7 @@ check_le("a restart as the faces touch continues as the unsplit run",
 # faces are rows of particles, whose contact normals tilt as they pass.)
 slide = {}
 for mu in (0.0, 0.5):
-    style = CONTACT.replace("pd/contact\n", f"pd/contact friction {mu}\n", 1) if mu else CONTACT
+    style = replace_exact(CONTACT, "pd/ordinary pd/contact\n", f"pd/ordinary pd/contact friction {mu}\n") if mu else CONTACT
     _, rows = run("comm_modify vel yes\n" + blocks(style, vy=10.0), d)
     slide[mu] = rows[-1]["v_vya"] / rows[0]["v_vya"]
     if mu:
@@ -97,11 +97,11 @@ print(f"tangential velocity kept: {slide[0.0]:.3f} without friction, {slide[0.5]
 check("friction removes tangential motion that frictionless contact keeps",
       slide[0.5] < 0.5 * slide[0.0], f"{slide[0.5]:.3f} vs {slide[0.0]:.3f}")
 
-bad = [("negative stiffness", "pair_style pd/contact\npair_coeff * * stiffness -1\n", "stiffness must be positive"),
+bad = [("negative stiffness", "pair_style pd/contact\npair_coeff * * stiffness -1\n", "stiffness must be a positive finite number"),
        ("negative contact distance", "pair_style pd/contact\npair_coeff * * stiffness 1e20 distance -1e-4\n",
-        "distance must be positive"),
+        "distance must be a positive finite number"),
        ("legacy contact without a legacy material",
-        CONTACT.replace("pd/contact\n", "pd/contact legacy\n", 1) + "run 0\n", "pd/contact legacy needs"),
+        replace_exact(CONTACT, "pd/ordinary pd/contact\n", "pd/ordinary pd/contact legacy\n") + "run 0\n", "pd/contact legacy needs"),
        ("contact alone without stiffness", "pair_style pd/contact\npair_coeff * *\nrun 0\n",
         "without a pd/ material style"),
        ("unknown keyword", "pair_style pd/contact\npair_coeff * * friction 0.3\n", "unknown keyword 'friction'"),
@@ -112,13 +112,12 @@ for what, pairs, message in bad:
     check(f"bad input, {what}: ERROR names it", message in out)
 # Default stiffness of unlike types: 15 times each type's PMB-equivalent
 # micromodulus (3D: 12 E / (pi delta^4)), and their harmonic mean for the
-# pair, whatever the pair's own horizon (here below the spacing, so the
-# bodies share no bonds: the value from that horizon would be 10^4 times
-# stiffer).
+# pair, not a value from the pair's horizon (here 'nobond': the bodies
+# share no bonds).
 UNLIKE = (f"pair_style hybrid/overlay pd/ordinary pd/contact\n"
           f"pair_coeff * * pd/ordinary E 3.5e9 nu 0.25 horizon {HORIZON}\n"
           f"pair_coeff 2 2 pd/ordinary E 70e9 nu 0.25 horizon {HORIZON}\n"
-          f"pair_coeff 1 2 pd/ordinary horizon {0.5 * SPACING}\npair_coeff * * pd/contact\n")
+          f"pair_coeff 1 2 pd/ordinary nobond\npair_coeff * * pd/contact\n")
 out, _ = run(blocks(UNLIKE, steps=0), d)
 c11, c12, c22 = (log_value(out, rf"stiffness c_s.* {p} ([0-9.e+]+)") for p in ("1-1", "1-2", "2-2"))
 expected = [15 * 12 * e / (math.pi * HORIZON ** 4) for e in (3.5e9, 70e9)]

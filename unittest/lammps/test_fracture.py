@@ -81,13 +81,13 @@ def slab(h, steps, dt):
     lam, mu = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
     eps3 = math.sqrt(2 * 1.3 * GC / ((lam + 2 * mu) * H_STRIP))
     lz = 8 * h
-    s = strip(h, steps, dt).replace("dimension 2\n", "").replace("fix 2d all enforce2d\n", "")
-    s = s.replace(f"lattice sq {h}", f"lattice sc {h}").replace("-0.5 0.5", "0 8")
-    s = s.replace(f"set group all volume {h * h * 1e-3}", f"set group all volume {h ** 3}")
-    s = s.replace("pair_style pd/ordinary plane stress thickness 1e-3", "pair_style pd/ordinary")
-    s = s.replace(f"segment -0.001 {H_STRIP / 2 + 0.5 * h} 0.015 {H_STRIP / 2 + 0.5 * h}",
+    s = replace_exact(replace_exact(strip(h, steps, dt), "dimension 2\n", ""), "fix 2d all enforce2d\n", "")
+    s = replace_exact(replace_exact(s, f"lattice sq {h}", f"lattice sc {h}"), "-0.5 0.5", "0 8")
+    s = replace_exact(s, f"set group all volume {h * h * 1e-3}", f"set group all volume {h ** 3}")
+    s = replace_exact(s, "pair_style pd/ordinary plane stress thickness 1e-3", "pair_style pd/ordinary")
+    s = replace_exact(s, f"segment -0.001 {H_STRIP / 2 + 0.5 * h} 0.015 {H_STRIP / 2 + 0.5 * h}",
                   f"patch -0.001 {H_STRIP / 2 + 0.5 * h} {-3 * h} 0.016 0 0 0 0 {lz + 6 * h}")
-    s = s.replace(f"{-STRAIN * H_STRIP / 2} {STRAIN * H_STRIP / 2}", f"{-eps3 * H_STRIP / 2} {eps3 * H_STRIP / 2}")
+    s = replace_exact(s, f"{-STRAIN * H_STRIP / 2} {STRAIN * H_STRIP / 2}", f"{-eps3 * H_STRIP / 2} {eps3 * H_STRIP / 2}")
     return s, lz
 
 
@@ -115,8 +115,8 @@ for h, dt in [(5e-4, 2.5e-8), (2.5e-4, 1.25e-8)]:
 balances = []
 for dt in (1e-7, 5e-8, 2.5e-8):
     s = strip(5e-4, int(round(6e-5 / dt)), dt)
-    s = s.replace("pair_style pd/ordinary plane", "pair_style pd/bond plane")
-    s = s.replace(f"pair_coeff * * E {E} nu {NU} horizon {3.0001 * 5e-4} m 0.5 fail energy Gc {GC}",
+    s = replace_exact(s, "pair_style pd/ordinary plane", "pair_style pd/bond plane")
+    s = replace_exact(s, f"pair_coeff * * E {E} nu {NU} horizon {3.0001 * 5e-4} m 0.5 fail energy Gc {GC}",
                   f"pair_coeff * * pmb E {E} horizon {3.0001 * 5e-4} fail stretch Gc {GC}")
     _, rows = run(s, d)
     balances.append(max(abs(r["v_total"] - rows[0]["v_total"]) for r in rows) / rows[0]["v_total"])

@@ -24,11 +24,11 @@ DECK_DUMP = ("dump fin all custom 900 final.${tag} id x y z c_1\n"
 
 def deck(name, pd_pair=None):
     s = open(os.path.join(src, "examples/peri", name)).read()
-    s = re.sub(r"^run\s+1000", DECK_DUMP, s, flags=re.M)
+    s = sub_exact(r"^run\s+1000", DECK_DUMP, s, flags=re.M)
     if pd_pair:
-        s = re.sub(r"^pair_style.*\n", "", s, flags=re.M)
-        s = re.sub(r"^pair_coeff.*\n", pd_pair, s, flags=re.M)
-        s = s.replace("compute         1 all damage/atom", "compute         1 all pd/damage")
+        s = sub_exact(r"^pair_style.*\n", "", s, flags=re.M)
+        s = sub_exact(r"^pair_coeff.*\n", pd_pair, s, flags=re.M)
+        s = replace_exact(s, "compute         1 all damage/atom", "compute         1 all pd/damage")
     return s
 
 

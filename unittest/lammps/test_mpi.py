@@ -12,7 +12,7 @@ run(plate(40) + "write_data plate.data\n", d)
 for style in ["pd/bond legacy", "pd/ordinary", "pd/ordinary 2D m=0"]:
     tag = style.replace(" ", "_").replace("/", "_").replace("=", "")
     two_d = "2D" in style
-    MOTION = ROUGH_VELOCITY.replace("v_vz", "0.0" if two_d else "v_vz") + \
+    MOTION = replace_exact(ROUGH_VELOCITY, "v_vz", "0.0" if two_d else "v_vz") + \
         f"velocity all set 200.0 NULL {0.0 if two_d else -100.0} sum yes units box\n"
     final = {}
     for ranks in (1, 2, 4):

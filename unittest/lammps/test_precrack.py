@@ -22,7 +22,7 @@ compute wdmg all pd/damage weighted
 compute dsum all reduce sum c_dmg
 compute wmax all reduce max c_wdmg
 compute frac all pd/fracture
-thermo_style custom step f_cut c_dsum c_wmax c_frac[3]
+thermo_style custom step f_cut c_dsum c_wmax c_frac[3] c_frac[4]
 thermo_modify format float %.15g
 run 0
 write_restart cut.restart
@@ -34,6 +34,7 @@ for ranks in (1, 2):
 check_le("damage sums to 2 x cut / 122", abs(r["c_dsum"] - 2 * expected / 122), 1e-9)
 check("weighted damage (T14 eq. 6.12) is between 0 and 1", 0 < r["c_wmax"] < 1, f"{r['c_wmax']:.3f}")
 check("pre-cut bonds are not counted as fracture", r["c_frac[3]"] == 0)
+check("pre-cut bonds are not counted as lost partners", r["c_frac[4]"] == 0, f"{r['c_frac[4]']:.0f}")
 out, rows = run("""read_restart cut.restart
 compute dmg all pd/damage
 compute dsum all reduce sum c_dmg
@@ -47,7 +48,7 @@ check_le("the cut survives a restart", abs(rows[-1]["c_dsum"] - 2 * expected / 1
 # patch from or to the other half.
 half = 10 * sum(v[2] * sum(1 for ix in range(5) if (ix + v[0]) % 10 < 5) for v in family if v[2] > 0)
 out, rows = run(block(10) + PAIRS["pd/ordinary"] + f"region half block INF {4.5 * h} INF INF INF INF units box\n"
-                "group half region half\n" + PATCH.replace("fix cut all", "fix cut half")
+                "group half region half\n" + replace_exact(PATCH, "fix cut all", "fix cut half")
                 + "thermo_style custom step f_cut\nrun 0\n", d)
 check(f"a group cuts only its own bonds ({half} of {expected})", rows[-1]["f_cut"] == half, f"{rows[-1]['f_cut']:.0f}")
 out, _ = run(block(10) + PAIRS["pd/ordinary"] + "fix cut all pd/precrack patch 1 1 1 0.1 0 0 0 0.1 0\n", d,

@@ -5,7 +5,7 @@
 
 /* One loop body, inlined into specialized copies: the flags are constants at
  * each call site, so no copy carries a branch it does not need. */
-static inline __attribute__((always_inline)) void
+PD_INLINE void
 pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_microplastic *mp,
          pd_failure *fail, const int *restrict type, const double *restrict x,
          const double *restrict vol, double *restrict f, pd_tally *tally,
@@ -29,8 +29,7 @@ pmb_loop(const pd_bond_view *restrict b, const pd_pmb *restrict mat, pd_micropla
       double r0 = b->len0[row + k];
       int broken = 0;
       if (failing) {
-        broken = pd_bond_broken(r0);
-        r0 = fabs(r0);
+        r0 = pd_bond_reference(fail, r0, i, j, &broken);
       }
       const double dx = x[3 * j] - xi, dy = x[3 * j + 1] - yi, dz = x[3 * j + 2] - zi;
       const double len = sqrt(dx * dx + dy * dy + dz * dz);

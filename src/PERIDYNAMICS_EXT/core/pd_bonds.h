@@ -3,6 +3,10 @@
 #ifndef PD_BONDS_H
 #define PD_BONDS_H
 
+/* PD_INLINE for the kernels (pd_ordinary.c, pd_bond_based.c), which include
+ * this header through their own. */
+#include "pd_macros.h"
+
 typedef struct pd_bond_view {
   int nowner;            /* atoms 0 .. nowner-1 may own bonds */
   int stride;            /* row length of the per-atom bond tables */

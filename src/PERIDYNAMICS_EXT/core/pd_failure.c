@@ -1,5 +1,7 @@
 #include "pd_failure.h"
 
+#include "pd_macros.h"
+
 #include <math.h>
 #include <stdlib.h>
 
@@ -15,18 +17,18 @@ double pd_energy_failure_beta(pd_influence_kind kind, int dim, double delta, dou
   for (int k = 0; k < NCELLS; k++) {
     const double r = (k + 0.5) * h;
     const double w = pd_influence(kind, dim, r, delta);
-    norm += (dim == 3 ? 4.0 * M_PI * r * r : 2.0 * M_PI * r) * w * h;
+    norm += (dim == 3 ? 4.0 * PD_PI * r * r : 2.0 * PD_PI * r) * w * h;
     moment += (dim == 3 ? r : 1.0) * w * h;
   }
   /* omega = (d / norm) w; I for beta = 1 */
   const double scale = dim / norm;
-  const double integral = (dim == 3 ? M_PI : 2.0) * scale * moment;
+  const double integral = (dim == 3 ? PD_PI : 2.0) * scale * moment;
   return Gc / (2.0 * integral);
 }
 
 double pd_energy_failure_beta_lattice(int dim, double Gc, double weighted_volume, double moment)
 {
-  const double mean_cos = dim == 3 ? 0.25 : 1.0 / M_PI;
+  const double mean_cos = dim == 3 ? 0.25 : 1.0 / PD_PI;
   return Gc * weighted_volume / (2.0 * dim * mean_cos * moment);
 }
 
@@ -49,8 +51,8 @@ double pd_critical_stretch(int dim, int plane_strain, double E, double nu, doubl
     const double K = E / (3.0 * (1.0 - 2.0 * nu));
     return sqrt(5.0 * Gc / (9.0 * K * delta));
   }
-  if (plane_strain) return sqrt(5.0 * M_PI * Gc / (12.0 * E * delta));
-  return sqrt(4.0 * M_PI * Gc / (9.0 * E * delta));
+  if (plane_strain) return sqrt(5.0 * PD_PI * Gc / (12.0 * E * delta));
+  return sqrt(4.0 * PD_PI * Gc / (9.0 * E * delta));
 }
 
 int pd_failure_note_fresh(pd_failure *f, int idx)

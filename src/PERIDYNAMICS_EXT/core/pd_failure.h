@@ -9,6 +9,8 @@
 #define PD_FAILURE_H
 
 #include "pd_bonds.h"
+
+#include <math.h>
 #include "pd_influence.h"
 
 /* PD_FAIL_LEGACY is LAMMPS PERI's rule: a bond breaks after its force acts
@@ -21,6 +23,9 @@ static inline int pd_bond_broken(double len0) { return len0 < 0.0; }
 typedef struct pd_failure {
   pd_fail_law law;
   int recontact;          /* broken bonds still push in compression */
+  /* with recontact: per-atom contact radius (owned + ghost; half the
+   * particle spacing), or NULL for a broken bond to push at any length */
+  const double *contact_radius;
   const double *s0;       /* critical stretch per type pair (stretch law) */
   double *len0;           /* the bonds' reference lengths, written on breaking */
   double *released_atom;  /* per-atom released energy density (owned + ghost), or NULL */
@@ -47,8 +52,22 @@ typedef struct pd_failure {
 /* Append idx to f->fresh, growing it (0 when out of memory). */
 int pd_failure_note_fresh(pd_failure *f, int idx);
 
-/* A broken bond acts only while compressed (strain < 0), and only with
- * recontact. */
+/* The reference length a bond acts with, and whether it is broken. A
+ * broken bond pushes only once its two particles touch, as MS07's
+ * short-range force: its reference length becomes the contact distance
+ * r_i + r_j where that is shorter, so its force rises from zero there and
+ * faces apart by more than that exert none on each other. */
+static inline double pd_bond_reference(const pd_failure *f, double len0, int i, int j, int *broken)
+{
+  *broken = pd_bond_broken(len0);
+  const double r0 = fabs(len0);
+  if (!*broken || !f->contact_radius) return r0;
+  const double touch = f->contact_radius[i] + f->contact_radius[j];
+  return touch < r0 ? touch : r0;
+}
+
+/* A broken bond acts only while compressed (strain < 0 with the reference
+ * length above), and only with recontact. */
 static inline int pd_bond_inactive(const pd_failure *f, int broken, double strain)
 {
   return broken && (strain >= 0.0 || !f->recontact);

@@ -1,9 +1,13 @@
 #include "pd_influence.h"
 
+#include "pd_macros.h"
+
 #include <math.h>
 #include <string.h>
 
-static const char *const names[] = {"constant", "inverse", "lps", "tupek", "gauss"};
+/* "gaussian", not "gauss": under pair_style hybrid a value that is also a
+ * pair style's name (gauss) would start a new sub-style */
+static const char *const names[] = {"constant", "inverse", "lps", "tupek", "gaussian"};
 #define NKINDS ((int) (sizeof(names) / sizeof(names[0])))
 
 double pd_influence(pd_influence_kind kind, int dim, double r, double delta)
@@ -17,8 +21,8 @@ double pd_influence(pd_influence_kind kind, int dim, double r, double delta)
     const double d3 = (delta - r) * (delta - r) * (delta - r);
     const double p = (3.0 * r + delta) * d3;
     const double d2 = delta * delta, d6 = d2 * d2 * d2;
-    if (dim == 2) return 10.0 / (M_PI * d6) * p;
-    return 315.0 / (16.0 * M_PI * d6 * delta) * p;
+    if (dim == 2) return 10.0 / (PD_PI * d6) * p;
+    return 315.0 / (16.0 * PD_PI * d6 * delta) * p;
   }
   case PD_INFLUENCE_GAUSS: {
     const double sigma = 0.5 * delta;

@@ -1,5 +1,5 @@
-/* Material files (potentials/*.pd): blocks 'material NAME' ... 'end' of
- * 'key value' lines in SI units, '#' comments. */
+/* Material files (the .pd files of potentials/): blocks 'material NAME' ...
+ * 'end' of 'key value' lines in SI units, '#' comments; lines of any length. */
 #ifndef PD_MATERIAL_FILE_H
 #define PD_MATERIAL_FILE_H
 
@@ -15,9 +15,12 @@ typedef struct pd_material {
 } pd_material;
 
 /* Find material 'name' in the file text. Returns 0 and fills *out, or -1
- * with a message in err: material not found, malformed line, a value that
- * is not a number, or a value without physical sense (negative or zero
- * density or modulus, Poisson's ratio outside (-1, 1/2)). */
+ * with a message in err naming the material and, for a line of its block,
+ * the line number: material not found, a second block of that name,
+ * malformed line, a key longer than PD_MATERIAL_KEY - 1 characters or given
+ * twice, a value that is not a finite number (nan, inf, overflow), or a
+ * value without physical sense (negative or zero density or modulus,
+ * Poisson's ratio outside (-1, 1/2)). Other blocks are not checked. */
 int pd_material_find(const char *text, const char *name, pd_material *out, char *err, size_t errlen);
 
 /* Value of a key, or NaN when the material does not give it. */

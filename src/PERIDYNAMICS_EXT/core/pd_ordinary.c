@@ -7,7 +7,7 @@
  * the common orders pay for no pow(): m = 1/2 (LPS stretch), m = 0 (log). */
 enum { ORDER_HALF, ORDER_LOG, ORDER_ANY };
 
-static inline __attribute__((always_inline)) double
+PD_INLINE double
 bond_strain(int kind, double m, double len, double r0)
 {
   if (kind == ORDER_HALF) return (len - r0) / r0;
@@ -16,7 +16,7 @@ bond_strain(int kind, double m, double len, double r0)
 }
 
 /* d eps / d|Y| = c^(m-1) |Y| / |xi|^2 = (1 + 2 m eps) / |Y|. */
-static inline __attribute__((always_inline)) double
+PD_INLINE double
 bond_strain_rate(int kind, double m, double eps, double len, double r0)
 {
   if (kind == ORDER_HALF) return 1.0 / r0;
@@ -44,7 +44,7 @@ static inline double bond_length(const double *restrict x, int i, int j, double 
   return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
-static inline __attribute__((always_inline)) void
+PD_INLINE void
 dilatation_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
                 const pd_failure *fail, const double *restrict x, const double *restrict vol,
                 int kind, int cached, int failing)
@@ -58,10 +58,11 @@ dilatation_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st,
       const int j = b->far[row + k];
       double d[3];
       const double len = bond_length(x, i, j, d);
-      const double r0s = b->len0[row + k];
-      const double eps = bond_strain(kind, st->order, len, failing ? fabs(r0s) : r0s);
+      int broken = 0;
+      const double r0 = failing ? pd_bond_reference(fail, b->len0[row + k], i, j, &broken) : b->len0[row + k];
+      const double eps = bond_strain(kind, st->order, len, r0);
       if (cached) st->strain[row + k] = eps;
-      if (failing && pd_bond_inactive(fail, pd_bond_broken(r0s), eps)) continue;
+      if (failing && pd_bond_inactive(fail, broken, eps)) continue;
       const double we = bond_weight(b, row + k) * eps;
       si += we * vol[j];
       sum[j] += we * vol[i];
@@ -92,7 +93,7 @@ void pd_ordinary_dilatation(const pd_bond_view *b, const pd_ordinary_state *st,
   }
 }
 
-static inline __attribute__((always_inline)) void
+PD_INLINE void
 force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failure *fail,
            const int *restrict type, const double *restrict x, const double *restrict vol,
            double *restrict f, pd_tally *tally, int kind, int tallied, int cached, int failing)
@@ -107,14 +108,14 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failu
     const int row = i * b->stride;
     const double ai = ab[2 * i], bi = ab[2 * i + 1], vi = vol[i];
     const double *restrict s0i = failing && fail->s0 ? fail->s0 + type[i] * nt : NULL;
+    const double *restrict gci = failing && st->gc ? st->gc + type[i] * nt : NULL;
     double fi[3] = {0.0, 0.0, 0.0};
     for (int k = 0; k < n; k++) {
       const int j = b->far[row + k];
       double r0 = b->len0[row + k];
       int broken = 0;
       if (failing) {
-        broken = pd_bond_broken(r0);
-        r0 = fabs(r0);
+        r0 = pd_bond_reference(fail, r0, i, j, &broken);
       }
       double d[3];
       const double len = bond_length(x, i, j, d);
@@ -136,7 +137,7 @@ force_loop(const pd_bond_view *restrict b, const pd_ordinary_state *st, pd_failu
         const double si = w * eps * (ai + 0.5 * bi * eps), sj = w * eps * (aj + 0.5 * bj * eps);
         const int breaks = fail->law == PD_FAIL_STRETCH
             ? len / r0 - 1.0 > s0i[type[j]]
-            : (si + sj) * r0 * r0 >= w * (st->crit[i] + st->crit[j]);
+            : (si + sj) * r0 * r0 >= w * (st->crit[i] + st->crit[j]) * gci[type[j]];
         if (breaks) {
           pd_break_bond(fail, &sums, row + k, r0, i, j, si, sj, vi, vj);
           share = 0.5;

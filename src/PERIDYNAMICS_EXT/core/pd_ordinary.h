@@ -21,8 +21,10 @@ typedef struct pd_ordinary_state {
   double *strain;  /* per-bond scratch laid out as the bonds, or NULL: for
                       m != 1/2 the dilatation pass stores each bond's strain
                       there and the force pass reuses it (one log per bond) */
-  int ntypes;      /* row length of the failure tables (stretch law) */
-  const double *crit; /* per atom beta N (energy law, owned + ghost), or NULL */
+  int ntypes;      /* row length of the failure tables */
+  const double *crit; /* per atom beta N for G_c = 1 (energy law, owned + ghost), or NULL */
+  const double *gc;   /* per type pair G_c of the bonds between them (energy
+                         law; +inf: they do not fail), or NULL */
 } pd_ordinary_state;
 
 /* Dilatation sums: st->sum[i] += w eps V_j, st->sum[j] += w eps V_i.
@@ -38,8 +40,9 @@ void pd_ordinary_dilatation(const pd_bond_view *b, const pd_ordinary_state *st,
  * an intact bond in tension breaks (acting with half its force that once) when its
  * stretch exceeds s0 (stretch law) or when the instantaneous bond energies at its ends,
  * s = w eps (A + B eps / 2) per partner volume (T14 eq. 6.5), reach
- * s_c(i) + s_c(j) = w (crit_i + crit_j) / |xi|^2 (energy law, T14 eq. 6.3,
- * crit = beta N). The released energy is s_i V_j + s_j V_i. */
+ * s_c(i) + s_c(j) = G_c w (crit_i + crit_j) / |xi|^2 (energy law, T14 eq. 6.3,
+ * crit = beta N per unit G_c, G_c of the bond's type pair: an interface
+ * has its own). The released energy is s_i V_j + s_j V_i. */
 void pd_ordinary_forces(const pd_bond_view *b, const pd_ordinary_state *st, pd_failure *fail,
                         const int *type, const double *x, const double *vol, double *f,
                         pd_tally *tally);

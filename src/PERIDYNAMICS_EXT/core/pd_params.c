@@ -1,5 +1,7 @@
 #include "pd_params.h"
 
+#include "pd_macros.h"
+
 #include <math.h>
 
 static int complete(pd_elastic *o)
@@ -41,15 +43,15 @@ double pd_pmb_micromodulus(pd_dimension dim, double E, double delta, double thic
 {
   const double d3 = delta * delta * delta;
   switch (dim) {
-  case PD_PLANE_STRESS: return 9.0 * E / (M_PI * d3 * thickness);
-  case PD_PLANE_STRAIN: return 48.0 * E / (5.0 * M_PI * d3 * thickness);
-  default: return 12.0 * E / (M_PI * d3 * delta);
+  case PD_PLANE_STRESS: return 9.0 * E / (PD_PI * d3 * thickness);
+  case PD_PLANE_STRAIN: return 48.0 * E / (5.0 * PD_PI * d3 * thickness);
+  default: return 12.0 * E / (PD_PI * d3 * delta);
   }
 }
 
 double pd_pmb_micromodulus_3d(double bulk, double delta)
 {
-  return 18.0 * bulk / (M_PI * delta * delta * delta * delta);
+  return 18.0 * bulk / (PD_PI * delta * delta * delta * delta);
 }
 
 pd_lame pd_ordinary_lame(pd_dimension dim, const pd_elastic *m)

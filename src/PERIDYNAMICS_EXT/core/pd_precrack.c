@@ -36,3 +36,9 @@ int pd_crosses_patch(const double p[3], const double q[3], const double o[3], co
   const double u = (r1 * g22 - r2 * g12) / det, v = (r2 * g11 - r1 * g12) / det;
   return u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0;
 }
+
+int pd_crack_crosses(const pd_crack *crack, const double p[3], const double q[3])
+{
+  return crack->patch ? pd_crosses_patch(p, q, crack->a, crack->b, crack->c)
+                      : pd_crosses_segment(p, q, crack->a, crack->b);
+}

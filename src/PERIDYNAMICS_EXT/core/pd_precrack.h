@@ -13,4 +13,14 @@ int pd_crosses_segment(const double p[2], const double q[2], const double a[2], 
 int pd_crosses_patch(const double p[3], const double q[3], const double o[3], const double e1[3],
                      const double e2[3]);
 
+/* A crack: a 2D segment a-b (patch 0; x, y used), or a 3D parallelogram
+ * a + u b + v c with u, v in [0, 1] (patch 1). */
+typedef struct pd_crack {
+  int patch;
+  double a[3], b[3], c[3];
+} pd_crack;
+
+/* Does the bond p-q cross the crack? */
+int pd_crack_crosses(const pd_crack *crack, const double p[3], const double q[3]);
+
 #endif

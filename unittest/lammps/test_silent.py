@@ -1,0 +1,139 @@
+"""Nothing silent (issue 9): set-ups that used to run quietly wrong.
+
+- Bonds per atom are reported per type; a type without bonds (a horizon
+  below the real spacing: wrong lattice, volume or units) is an ERROR; two
+  types that touch but share no bonds get a WARNING unless 'nobond' says so.
+- The bond families survive a run with another pair style (pair_style none).
+- A restart written before the first run keeps fix pd/precrack's cut.
+- A 'run 0' loop with displace_atoms (quasi-static loading) books every bond
+  it breaks, as the same loading with 'run 1' does.
+"""
+from lmptest import *
+
+d = workdir()
+H = HORIZON
+
+# --- bonds per atom -------------------------------------------------------
+# simple cubic, horizon 3 spacings: 122 lattice points within it (periodic)
+out, _ = run(block(8) + PAIRS["pd/ordinary"] + "run 0\n", d)
+check("bonds per atom by type are logged (122 in a periodic sc block)",
+      "pd/bonds: bonds per atom by type: type 1 122.00;" in out)
+sparse = replace_exact(block(6), f"lattice sc {SPACING}", "lattice sc 0.002")
+check("the sparse deck really has a 4x larger spacing", "lattice sc 0.002" in sparse)
+out, _ = run(sparse + PAIRS["pd/ordinary"] + "run 0\n", d, expect_error=True)
+check("a body without bonds (spacing 0.002, horizon 0.0015) is an ERROR naming the type",
+      "ERROR: Fix pd/bonds: atoms of type 1 have 0.00 bonds on average" in out)
+lj = replace_exact(block(6), "units si", "units lj")
+out, _ = run(lj + PAIRS["pd/ordinary"] + "run 0\n", d, expect_error=True)
+check("an SI deck under units lj (no bonds) is an ERROR", "atoms of type 1 have 0.00 bonds on average" in out)
+
+# two types side by side: lower half type 1, upper half type 2
+TWO = replace_exact(block(8), "create_box 1 box", "create_box 2 box") + \
+    f"region upper block INF INF INF INF 4 INF\nset region upper type 2\n"
+out, _ = run(TWO + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.25 horizon {H}\n"
+             f"pair_coeff 1 2 horizon {0.5 * SPACING}\nrun 0\n", d)
+check("two touching types with a horizon below the spacing: a WARNING names the pair",
+      "WARNING: Fix pd/bonds: types 1 and 2 touch" in out and "pair_coeff 1 2 nobond" in out)
+out, _ = run(TWO + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.25 horizon {H}\n"
+             "pair_coeff 1 2 nobond\nrun 0\n", d)
+check("'nobond' keeps them apart without a warning, and the log says 0 bonds between them",
+      "bonds between types: 1-2 0;" in out and "WARNING: Fix pd/bonds" not in out)
+out, _ = run(TWO + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.25 horizon {H}\nrun 0\n", d)
+check("mixed types bond across the interface (the count is logged)",
+      "bonds between types: 1-2" in out and "bonds between types: 1-2 0;" not in out)
+
+# --- pair_style none between runs -----------------------------------------
+MOVE = ROUGH_VELOCITY + "fix 1 all nve\ntimestep 1e-8\ncompute dmg all pd/damage\n" \
+    "compute dmax all reduce max c_dmg\ncompute frac all pd/fracture\n" \
+    "thermo_style custom step pe c_dmax c_frac[4]\nthermo_modify format float %.15g\n"
+out, rows = run(block(8) + PAIRS["pd/ordinary"] + MOVE + "run 10\npair_style none\nrun 5\n" +
+                PAIRS["pd/ordinary"] + "run 10\n", d)
+r = rows[-1]
+check("a run with pair_style none keeps every bond: no damage, no lost partner",
+      r["c_dmax"] < 1e-12 and r["c_frac[4]"] == 0.0, f"damage {r['c_dmax']:.3g} (round-off), lost {r['c_frac[4]']}")
+check("... the log says the families were kept", "the bond families are kept unchanged" in out)
+check("... and the material acts again afterwards (elastic energy)", r["PotEng"] > 0.0, f"{r['PotEng']:.3g}")
+
+# --- a restart before the first run keeps the pre-crack ---------------------
+PATCH = f"fix cut all pd/precrack patch {-3 * SPACING} {-3 * SPACING} {4.5 * SPACING} " \
+    f"{16 * SPACING} 0 0 0 {16 * SPACING} 0\n"
+out, rows = run(block(10) + PAIRS["pd/ordinary"] + PATCH + "thermo_style custom step f_cut\nrun 0\n", d)
+direct = rows[-1]["f_cut"]
+run(block(10) + PAIRS["pd/ordinary"] + PATCH + "write_restart early.restart\n", d)
+out, rows = run("read_restart early.restart\ncompute dmg all pd/damage\ncompute dsum all reduce sum c_dmg\n"
+                "thermo_style custom step c_dsum\nthermo_modify format float %.15g\nrun 0\n", d)
+saved = log_value(out, r"pd/bonds: (\d+) bonds cut by the pre-cracks saved in the restart file")
+check(f"a restart written before the first run keeps the cut ({direct:.0f} bonds)", saved == direct and direct > 0,
+      f"{saved} vs {direct}")
+check_le("... and the damage is that of the cut (2 x cut / 122)", abs(rows[-1]["c_dsum"] - 2 * direct / 122), 1e-9)
+
+# --- breaks in a re-evaluated step are booked ---------------------------------
+# A bar stretched in 12 increments, each followed by one force evaluation:
+# 'run 0' (the step does not advance) must book what 'run 1' books.
+def stretched(evaluate):
+    return block(12, "s s s") + f"""pair_style pd/ordinary
+pair_coeff * * E 1e9 nu 0.25 horizon {H} fail stretch 0.002
+compute frac all pd/fracture
+thermo_style custom step c_frac[2] c_frac[3]
+thermo_modify format float %.15g
+run 0
+variable k loop 12
+label again
+displace_atoms all ramp x 0 {0.0006 * SPACING * 12} x 0 {SPACING * 12} units box
+{evaluate}
+next k
+jump SELF again
+run 0
+"""
+
+
+out0, rows0 = run(stretched("run 0"), d, name="in.run0")
+out1, rows1 = run(stretched("run 1"), d, name="in.run1")
+b0, b1 = rows0[-1]["c_frac[3]"], rows1[-1]["c_frac[3]"]
+e0, e1 = rows0[-1]["c_frac[2]"], rows1[-1]["c_frac[2]"]
+check("the loading breaks bonds", b1 > 100, f"{b1:.0f}")
+check("a 'run 0' loop books the same broken bonds as 'run 1'", b0 == b1, f"{b0:.0f} vs {b1:.0f}")
+check_le("... and the same dissipated energy", abs(e0 - e1) / e1, 1e-12, "same bonds, same states")
+
+# --- lost partners, whatever the rank count --------------------------------------
+# A block flies out of a fixed box (position-based velocities: the same
+# motion on any rank count, although create_atoms numbers atoms by rank and
+# so decides which end stores each bond). Every intact bond whose atom left
+# is lost, counted once, whichever end stored it.
+FLY = f"""units si
+{{procs}}
+boundary f f f
+atom_style peri
+atom_modify map array
+lattice sc {SPACING}
+region box block 0 12 0 12 0 12
+create_box 1 box
+region inner block 3 9 3 9 3 9
+create_atoms 1 region inner
+set group all density 2200
+set group all volume {VOLUME}
+pair_style pd/bond
+pair_coeff * * pmb K 14.9e9 horizon {H}
+variable phase atom x*7e3+y*3e4+z*1e5
+variable vx atom 300+5*sin(12.9898*v_phase)
+variable vy atom 5*sin(78.233*v_phase)
+variable vz atom 5*sin(37.719*v_phase)
+velocity all set v_vx v_vy v_vz units box
+fix 1 all nve
+timestep 2e-8
+compute frac all pd/fracture
+variable n equal count(all)
+thermo_style custom step v_n c_frac[4]
+thermo_modify lost ignore
+run 600
+"""
+counts = {}
+for procs, ranks in (("", 1), ("processors 2 1 1", 2), ("processors 1 2 1", 2)):
+    out, rows = run(FLY.format(procs=procs), d, ranks=ranks)
+    counts[procs or "1 rank"] = (rows[-1]["v_n"], rows[-1]["c_frac[4]"])
+values = list(counts.values())
+check("atoms leave the box (the same on every layout)", values[0][0] < 343 and len(set(v[0] for v in values)) == 1,
+      str(counts))
+check("lost partners: the same count on 1 rank and on 2 ranks split either way",
+      len(set(v[1] for v in values)) == 1 and values[0][1] > 0, str(counts))
+finish()
