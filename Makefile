@@ -15,7 +15,7 @@ export CCACHE_NOHASHDIR := 1
 LMP := $(BUILD_DIR)/lmp
 STAMP_SETUP := $(PDEXT_CACHE)/.setup-ok
 
-.PHONY: all setup build test demo bench validate clean
+.PHONY: all setup configure build plugin test demo bench validate clean
 
 all: build
 
@@ -26,12 +26,19 @@ $(STAMP_SETUP): tools/setup-deps.sh
 
 # Configure every time (a few seconds): new style files are registered with
 # LAMMPS at configure time; unchanged style headers cause no recompilation.
-build: | $(STAMP_SETUP)
+configure: | $(STAMP_SETUP)
 	src="$(LAMMPS_SOURCE_DIR)"; \
 	[ -n "$$src" ] || src=$$(./tools/fetch-lammps.sh $(PDEXT_CACHE)); \
 	cmake -S . -B $(BUILD_DIR) -DLAMMPS_SOURCE_DIR="$$src" \
 	  -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
+
+build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# The plugin alone (build/pdext.so), for 'plugin load' into another LAMMPS
+plugin: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target pdext
+	@echo "plugin: $(BUILD_DIR)/pdext.so ('plugin load' it in a LAMMPS with the PLUGIN package)"
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

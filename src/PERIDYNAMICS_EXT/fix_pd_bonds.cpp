@@ -196,7 +196,7 @@ void FixPDBonds::build_families()
   auto reference_length = [&](int i, int j) {
     if (!owns_bond(tag[i], tag[j]) || domain->closest_image(i, atom->map(tag[j])) != j) return -1.0;
     double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-    domain->minimum_image(d[0], d[1], d[2]);
+    PDCompat::minimum_image(domain, d);
     const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     return r <= owner->horizon(type[i], type[j]) ? r : -1.0;
   };
@@ -227,7 +227,7 @@ void FixPDBonds::build_families()
       const int a = MIN(type[i], type[j]), b = MAX(type[i], type[j]);
       if (a != b && !touching[a * nt + b]) {
         double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-        domain->minimum_image(d[0], d[1], d[2]);
+        PDCompat::minimum_image(domain, d);
         const double reach = MAX(owner->horizon(a, a), owner->horizon(b, b));
         touching[a * nt + b] = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= reach * reach;
       }
@@ -642,7 +642,7 @@ void FixPDBonds::write_restart(FILE *fp)
   if (comm->me != 0) return;
   std::vector<const PendingCut *> cuts;
   for (const PendingCut &c : pending_cuts)
-    if (!built && (c.fixid.empty() || modify->find_fix(c.fixid.c_str()) >= 0)) cuts.push_back(&c);
+    if (!built && (c.fixid.empty() || PDCompat::fix_by_id(modify, c.fixid))) cuts.push_back(&c);
   std::vector<double> list(R_FIXED);
   list[R_FORMAT] = RESTART_FORMAT;
   list[R_BUILT] = built;
@@ -855,7 +855,7 @@ bigint FixPDBonds::cut_crossing(const pd_crack &crack, int groupbit)
       const int j = far[i][k];
       if (r0[i][k] < 0.0 || !(mask[i] & groupbit) || !(mask[j] & groupbit)) continue;
       double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-      domain->minimum_image(d[0], d[1], d[2]);
+      PDCompat::minimum_image(domain, d);
       const double q[3] = {x0[i][0] + d[0], x0[i][1] + d[1], x0[i][2] + d[2]};
       if (pd_crack_crosses(&crack, x0[i], q)) {
         r0[i][k] = -r0[i][k];

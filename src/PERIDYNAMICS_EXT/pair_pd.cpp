@@ -14,6 +14,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "pd_compat.h"
 #include "update.h"
 
 #include <cmath>
@@ -471,25 +472,21 @@ void PairPD::init_style()
       error->all(FLERR, "Pair {}: periodic box length {} is not larger than twice the horizon {}",
                  style, domain->prd[d], cutmax);
 
-  int ifix = modify->find_fix(FIX_ID);
-  const bool built = ifix >= 0 && dynamic_cast<FixPDBonds *>(modify->fix[ifix]) &&
-      dynamic_cast<FixPDBonds *>(modify->fix[ifix])->is_built();
-  if (legacy && lattice_spacing == 0.0 && !built) {
-    if (domain->lattice->style == Lattice::NONE)
+  auto *store = dynamic_cast<FixPDBonds *>(PDCompat::fix_by_id(modify, FIX_ID));
+  if (legacy && lattice_spacing == 0.0 && !(store && store->is_built())) {
+    const Lattice *lattice = PDCompat::lattice(domain);
+    if (!lattice)
       error->all(FLERR, "Pair {} legacy reproduces PERI's partial volumes, which need the lattice "
                  "spacing: define a lattice first (it is saved in restart files)", style);
-    if (domain->lattice->xlattice != domain->lattice->ylattice ||
-        domain->lattice->xlattice != domain->lattice->zlattice)
+    if (lattice->xlattice != lattice->ylattice || lattice->xlattice != lattice->zlattice)
       error->all(FLERR, "Pair {} legacy needs a lattice with equal spacing in x, y and z", style);
-    lattice_spacing = domain->lattice->xlattice;
+    lattice_spacing = lattice->xlattice;
   }
 
-  if (ifix < 0) {
+  if (!PDCompat::fix_by_id(modify, FIX_ID))
     modify->add_fix(fmt::format("{} all pd/bonds {} history {}", FIX_ID,
                                 uses_weights() ? "weights" : "noweights", history_per_bond()));
-    ifix = modify->find_fix(FIX_ID);
-  }
-  bonds = dynamic_cast<FixPDBonds *>(modify->fix[ifix]);
+  bonds = dynamic_cast<FixPDBonds *>(PDCompat::fix_by_id(modify, FIX_ID));
   if (!bonds) error->all(FLERR, "Fix ID {} is taken by a fix that is not pd/bonds", FIX_ID);
   bonds->set_owner(this);
   bonds->set_family_key(family_key());

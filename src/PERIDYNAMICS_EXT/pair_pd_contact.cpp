@@ -144,7 +144,7 @@ void PairPDContact::init_style()
       if (!std::isnan(distance[i][j])) cutmax_contact = MAX(cutmax_contact, distance[i][j]);
 
   // a half list of its own, with its own short cutoff: not the horizon
-  PDCompat::request_pair_with_cutoff(neighbor, this, instance_me, cutmax_contact + neighbor->skin);
+  PDCompat::request_pair_with_cutoff(neighbor, this, instance_me, cutmax_contact);
   report = 1;
 }
 
@@ -186,7 +186,7 @@ void PairPDContact::filter_pairs()
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
       if (material && !legacy) {
         double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-        domain->minimum_image(d[0], d[1], d[2]);
+        PDCompat::minimum_image(domain, d);
         const double h = material->horizon(type[i], type[j]);
         if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= h * h) continue;
       }
@@ -271,7 +271,7 @@ void PairPDContact::compute(int eflag, int vflag)
     if (legacy) {
       // PERI: every neighbour pair, bonded or not, at min(0.9 |xi|, 1.35 lc)
       double d0[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-      domain->minimum_image(d0[0], d0[1], d0[2]);
+      PDCompat::minimum_image(domain, d0);
       const double dist = MIN(0.9 * sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), 1.35 * lc);
       pd_contact_legacy_pair(material->contact_micromodulus(ti, tj), material->horizon(ti, tj), dist,
                              vol[i], vol[j], d, f[i], f[j], tp, i, j);

@@ -1,37 +1,103 @@
 /* The LAMMPS calls whose names or signatures changed between releases, in
- * one place. Written against 29 Sep 2021; later releases renamed the comm
- * entry points (forward_comm(Fix *, int) ...) and the neighbor request API
- * (add_request(this, NeighConst::REQ_FULL | REQ_OCCASIONAL)). */
+ * one place. Which form a LAMMPS tree has is decided by CMake, which looks
+ * at its headers (cmake/PDExtLammpsFeatures.cmake), not at its version:
+ *   PDEXT_COMM_FIX_NAMED        comm->forward_comm_fix(fix, n) (before 24Mar2022;
+ *                               later forward_comm(Fix *, n))
+ *   PDEXT_NEIGH_ADD_REQUEST     neighbor->add_request(...) with flags (24Mar2022 on;
+ *                               before: neighbor->request() and public fields)
+ *   PDEXT_MINIMUM_IMAGE_FLERR   domain->minimum_image(FLERR, dx, dy, dz) (12Jun2025 on)
+ *   PDEXT_GET_FIX_BY_ID         modify->get_fix_by_id(id) (find_fix and fix[] are
+ *                               deprecated, to be removed)
+ * Tested against 29Sep2021, 2Aug2023 and 19Nov2024. */
 #ifndef LMP_PD_COMPAT_H
 #define LMP_PD_COMPAT_H
 
 #include "comm.h"
+#include "domain.h"
+#include "lattice.h"
+#include "modify.h"
 #include "neigh_request.h"
 #include "neighbor.h"
+
+#include <string>
 
 namespace LAMMPS_NS {
 namespace PDCompat {
 
-  inline void forward_comm(Comm *comm, class Fix *fix, int size) { comm->forward_comm_fix(fix, size); }
-  inline void reverse_comm(Comm *comm, class Fix *fix, int size) { comm->reverse_comm_fix(fix, size); }
+  inline void forward_comm(Comm *comm, class Fix *fix, int size)
+  {
+#ifdef PDEXT_COMM_FIX_NAMED
+    comm->forward_comm_fix(fix, size);
+#else
+    comm->forward_comm(fix, size);
+#endif
+  }
+
+  inline void reverse_comm(Comm *comm, class Fix *fix, int size)
+  {
+#ifdef PDEXT_COMM_FIX_NAMED
+    comm->reverse_comm_fix(fix, size);
+#else
+    comm->reverse_comm(fix, size);
+#endif
+  }
 
   /* A full neighbor list for a fix, built only on demand. */
   inline void request_occasional_full(Neighbor *neighbor, class Fix *fix, int instance)
   {
+#ifdef PDEXT_NEIGH_ADD_REQUEST
+    (void) instance;
+    neighbor->add_request(fix, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+#else
     int irequest = neighbor->request(fix, instance);
     neighbor->requests[irequest]->pair = 0;
     neighbor->requests[irequest]->fix = 1;
     neighbor->requests[irequest]->half = 0;
     neighbor->requests[irequest]->full = 1;
     neighbor->requests[irequest]->occasional = 1;
+#endif
   }
 
-  /* A half list for a pair style, built with its own cutoff. */
+  /* A half list for a pair style with its own cutoff; the list reaches
+   * cutoff + skin (the newer API adds the skin itself). */
   inline void request_pair_with_cutoff(Neighbor *neighbor, class Pair *pair, int instance, double cutoff)
   {
+#ifdef PDEXT_NEIGH_ADD_REQUEST
+    (void) instance;
+    neighbor->add_request(pair)->set_cutoff(cutoff);
+#else
     int irequest = neighbor->request(pair, instance);
     neighbor->requests[irequest]->cut = 1;
-    neighbor->requests[irequest]->cutoff = cutoff;
+    neighbor->requests[irequest]->cutoff = cutoff + neighbor->skin;
+#endif
+  }
+
+  /* The shortest periodic image of a separation, in place. */
+  inline void minimum_image(Domain *domain, double d[3])
+  {
+#ifdef PDEXT_MINIMUM_IMAGE_FLERR
+    domain->minimum_image(FLERR, d[0], d[1], d[2]);
+#else
+    domain->minimum_image(d[0], d[1], d[2]);
+#endif
+  }
+
+  /* A fix by ID, or null. */
+  inline class Fix *fix_by_id(Modify *modify, const std::string &id)
+  {
+#ifdef PDEXT_GET_FIX_BY_ID
+    return modify->get_fix_by_id(id);
+#else
+    const int ifix = modify->find_fix(id);
+    return ifix < 0 ? nullptr : modify->fix[ifix];
+#endif
+  }
+
+  /* The lattice, or null when none was defined (recent LAMMPS keeps no
+   * default lattice object). */
+  inline Lattice *lattice(Domain *domain)
+  {
+    return domain->lattice && domain->lattice->style != Lattice::NONE ? domain->lattice : nullptr;
   }
 
 }    // namespace PDCompat

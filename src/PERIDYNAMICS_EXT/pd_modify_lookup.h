@@ -6,13 +6,13 @@
 #include "fix_pd_bonds.h"
 #include "lammps.h"
 #include "modify.h"
+#include "pd_compat.h"
 
 namespace LAMMPS_NS {
 
 inline FixPDBonds *find_bond_store(LAMMPS *lmp, const char *who)
 {
-  const int ifix = lmp->modify->find_fix("PD_BONDS");
-  FixPDBonds *fix = ifix < 0 ? nullptr : dynamic_cast<FixPDBonds *>(lmp->modify->fix[ifix]);
+  auto *fix = dynamic_cast<FixPDBonds *>(PDCompat::fix_by_id(lmp->modify, "PD_BONDS"));
   if (!fix)
     lmp->error->all(FLERR, "{} needs a pd/ pair style (pd/bond, pd/ordinary) and one run or "
                     "'run 0' before it is used, so the bond families exist", who);

@@ -1,0 +1,47 @@
+"""The package as a plugin (issue 10): a plain LAMMPS (PLUGIN and PERI
+packages, shared library, none of our styles compiled in) runs our styles
+after 'plugin load pdext.so'.
+
+- Without the plugin, pair_style pd/bond is unknown to it (so what runs
+  below is the plugin's).
+- Parity: pd/bond legacy from the plugin reproduces the plain LAMMPS's own
+  peri/pmb to 1e-10 relative (round-off of differently ordered sums, as in
+  test_parity.py).
+- Restart: 'run 100', write_restart, a new process that loads the plugin,
+  read_restart, 'run 100' ends where 'run 100' twice in one process ends,
+  bitwise.
+"""
+import os
+import lmptest
+from lmptest import *
+
+PLAIN = os.path.abspath(os.environ.get("PDEXT_PLAIN_LMP", "../../build/plain-lammps/lmp"))
+PLUGIN = os.path.abspath(os.environ.get("PDEXT_PLUGIN", "../../build/pdext.so"))
+check("the plain LAMMPS and the plugin exist", os.path.exists(PLAIN) and os.path.exists(PLUGIN), f"{PLAIN}, {PLUGIN}")
+lmptest.LMP = PLAIN
+d = workdir()
+LOAD = f"plugin load {PLUGIN}\n"
+
+out, _ = run(block(8) + PAIRS["pd/bond legacy"], d, expect_error=True)
+check("without the plugin the plain LAMMPS does not know pd/bond", "Unrecognized pair style 'pd/bond'" in out)
+out, _ = run(LOAD + "plugin list\n", d)
+check("the plugin registers the package's styles", all(s in out for s in (
+    "pair style plugin pd/bond", "pair style plugin pd/ordinary", "pair style plugin pd/contact",
+    "fix style plugin pd/bonds", "fix style plugin pd/precrack", "compute style plugin pd/damage",
+    "compute style plugin pd/atom", "compute style plugin pd/fracture")), out[-600:])
+
+STEPS = ROUGH_VELOCITY + "fix 1 all nve\ntimestep 1.0e-7\nthermo 100\n"
+final = {}
+for style in ("peri/pmb", "pd/bond legacy"):
+    tag = style.replace(" ", "_").replace("/", "_")
+    run(LOAD + block(12) + STEPS + PAIRS[style] + "run 200\n" + DUMP.format(file="final." + tag), d)
+    final[style] = read_dump(f"{d}/final.{tag}")
+check_le("plugin pd/bond legacy reproduces the plain LAMMPS's peri/pmb",
+         max_rel_diff(final["peri/pmb"], final["pd/bond legacy"]), 1e-10, "round-off of differently ordered sums")
+
+run(LOAD + block(12) + STEPS + PAIRS["pd/bond legacy"] + "run 100\nrun 100\n" + DUMP.format(file="one"), d)
+run(LOAD + block(12) + STEPS + PAIRS["pd/bond legacy"] + "run 100\nwrite_restart half.restart\n", d)
+out, _ = run(LOAD + "read_restart half.restart\nfix 1 all nve\nrun 100\n" + DUMP.format(file="restarted"), d)
+diff = max_rel_diff(read_dump(f"{d}/one"), read_dump(f"{d}/restarted"))
+check("restart with the plugin: the run continues bitwise", diff == 0.0, f"max rel diff {diff:.3g}")
+finish()
