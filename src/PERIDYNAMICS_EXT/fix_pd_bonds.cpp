@@ -64,6 +64,7 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
 
   restart_global = 1;
   restart_peratom = 1;
+  wd_header = 1;    // to warn when write_data runs (write_data_header)
   scalar_flag = 1;
   global_freq = 1;
   extscalar = 0;
@@ -630,6 +631,20 @@ enum { R_FORMAT, R_SIZE, R_BUILT, R_MAXPARTNER, R_WEIGHTS, R_LOST, R_HISTORY, R_
        R_KEY, R_JOULE, R_BROKEN, R_ANYBROKEN, R_FRESH_STEP, R_NFRESH, R_NCUTS, R_INTACT, R_BREAKS,
        R_FIXED };
 constexpr int CUT_DOUBLES = 11;    // patch, a, b, c, groupbit
+}
+
+// write_data calls this on rank 0 while it writes the header: the one hook
+// LAMMPS gives a fix there. A data file keeps positions, not the bonds, the
+// reference shape or the damage; say so on the screen, and in the file as a
+// comment (read_data skips it).
+void FixPDBonds::write_data_header(FILE *fp, int)
+{
+  if (!built) return;
+  error->warning(FLERR, "Fix pd/bonds: write_data does not store the bond families (reference "
+                 "positions, broken bonds, damage): read_data makes an intact body in its current "
+                 "shape; continue a cracked body from a restart file (write_restart)");
+  fputs("# PERIDYNAMICS_EXT: no bond families, reference positions or damage in data files; "
+        "continue a cracked body from a restart file\n", fp);
 }
 
 void FixPDBonds::write_restart(FILE *fp)

@@ -95,6 +95,15 @@ check("the loading breaks bonds", b1 > 100, f"{b1:.0f}")
 check("a 'run 0' loop books the same broken bonds as 'run 1'", b0 == b1, f"{b0:.0f} vs {b1:.0f}")
 check_le("... and the same dissipated energy", abs(e0 - e1) / e1, 1e-12, "same bonds, same states")
 
+# --- data files ------------------------------------------------------------------
+out, _ = run(block(8) + PAIRS["pd/ordinary"] + "run 0\nwrite_data cracked.data\n", d)
+check("write_data after the families exist: a WARNING says what a data file loses",
+      "WARNING: Fix pd/bonds: write_data does not store the bond families" in out)
+out, _ = run("units si\nboundary p p p\natom_style peri\natom_modify map array\nread_data cracked.data\n"
+             + PAIRS["pd/ordinary"] + "run 0\n", d)
+check("... and the file still reads (the note is a comment in its header)", "pd/bonds: bonds per atom by type" in out
+      and "# PERIDYNAMICS_EXT: no bond families" in open(f"{d}/cracked.data").read())
+
 # --- lost partners, whatever the rank count --------------------------------------
 # A block flies out of a fixed box (position-based velocities: the same
 # motion on any rank count, although create_atoms numbers atoms by rank and
