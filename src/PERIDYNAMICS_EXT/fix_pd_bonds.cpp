@@ -107,9 +107,9 @@ void FixPDBonds::post_run()
 {
   const bigint total = (bigint) compute_scalar();
   if (total > nlost_reported && comm->me == 0)
-    error->warning(FLERR, "Fix pd/bonds: {} bond partners lost so far (moved beyond the ghost "
-                   "cutoff, horizon + skin); f_{} counts them; 'comm_modify cutoff' reaches further",
-                   total, id);
+    error->warning(FLERR, "Fix pd/bonds: {} intact bonds lost so far (an end moved beyond the "
+                   "ghost cutoff, horizon + skin, or left the box or was deleted); f_{} counts "
+                   "them; 'comm_modify cutoff' reaches further", total, id);
   nlost_reported = total;
 }
 

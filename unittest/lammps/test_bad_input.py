@@ -115,46 +115,56 @@ TWO_TYPES = ("units si\nboundary s s s\natom_style peri\natom_modify map array\n
              "region b block 0 4 0 4 0 4\ncreate_box 2 b\ncreate_atoms 1 box\nset group all volume 1.25e-10\n"
              "set group all density 1000\n")
 ORD = "pair_style pd/ordinary\npair_coeff * * "
+
+
+def overflow(key, text="1e400"):
+    """Our ERROR names the key; LAMMPS 19Nov2024 refuses a number out of
+    double's range itself while reading it, naming the value: either says
+    what is wrong."""
+    return (f"'{key}' must be a finite number",
+            f"Floating point number {text} in input script or data file is out of range")
+
+
 BOND = "pair_style pd/bond\npair_coeff * * pmb "
 OK_ORD = f"E 1e9 nu 0.25 horizon {H}"
 CONTACT = "pair_style pd/contact\npair_coeff * * "
 cases += [
     # overflow, inf, nan, words: LAMMPS refuses words and nan/inf spelled out,
     # we refuse what overflows to inf (1e400), by the key's name
-    ("K overflows", block(6) + BOND + f"K 1e400 horizon {H}\n", "'K' must be a finite number"),
-    ("micromodulus overflows", block(6) + BOND + f"c 1e400 horizon {H}\n", "'c' must be a finite number"),
-    ("E overflows", block(6) + ORD + f"E 1e400 nu 0.25 horizon {H}\n", "'E' must be a finite number"),
+    ("K overflows", block(6) + BOND + f"K 1e400 horizon {H}\n", overflow("K")),
+    ("micromodulus overflows", block(6) + BOND + f"c 1e400 horizon {H}\n", overflow("c")),
+    ("E overflows", block(6) + ORD + f"E 1e400 nu 0.25 horizon {H}\n", overflow("E")),
     ("E spelled inf", block(6) + ORD + f"E inf nu 0.25 horizon {H}\n", "inf"),
     ("E spelled nan", block(6) + ORD + f"E nan nu 0.25 horizon {H}\n", "nan"),
     ("E a word", block(6) + ORD + f"E glass nu 0.25 horizon {H}\n", "glass"),
-    ("G overflows", block(6) + ORD + f"K 1e9 G 1e400 horizon {H}\n", "'G' must be a finite number"),
-    ("nu overflows", block(6) + ORD + f"E 1e9 nu -1e400 horizon {H}\n", "'nu' must be a finite number"),
-    ("horizon overflows", block(6) + ORD + "E 1e9 nu 0.25 horizon 1e400\n", "'horizon' must be a finite number"),
-    ("m overflows", block(6) + ORD + f"{OK_ORD} m 1e400\n", "'m' must be a finite number"),
-    ("s0 overflows", block(6) + ORD + f"{OK_ORD} fail stretch 1e400\n", "'s0' must be a finite number"),
-    ("Gc overflows", block(6) + ORD + f"{OK_ORD} fail energy Gc 1e400\n", "'Gc' must be a finite number"),
-    ("stretch Gc overflows", block(6) + ORD + f"{OK_ORD} fail stretch Gc 1e400\n", "'Gc' must be a finite number"),
+    ("G overflows", block(6) + ORD + f"K 1e9 G 1e400 horizon {H}\n", overflow("G")),
+    ("nu overflows", block(6) + ORD + f"E 1e9 nu -1e400 horizon {H}\n", overflow("nu", "-1e400")),
+    ("horizon overflows", block(6) + ORD + "E 1e9 nu 0.25 horizon 1e400\n", overflow("horizon")),
+    ("m overflows", block(6) + ORD + f"{OK_ORD} m 1e400\n", overflow("m")),
+    ("s0 overflows", block(6) + ORD + f"{OK_ORD} fail stretch 1e400\n", overflow("s0")),
+    ("Gc overflows", block(6) + ORD + f"{OK_ORD} fail energy Gc 1e400\n", overflow("Gc")),
+    ("stretch Gc overflows", block(6) + ORD + f"{OK_ORD} fail stretch Gc 1e400\n", overflow("Gc")),
     ("legacy s00 overflows", block(6) + f"pair_style pd/bond legacy\npair_coeff * * pmb K 1e9 horizon {H} fail legacy 1e400 0.25\n",
-     "'s00' must be a finite number"),
+     overflow("s00")),
     ("thickness overflows", PLATE + "pair_style pd/ordinary plane stress thickness 1e400\n",
-     "thickness must be a positive finite number, got '1e400'"),
+     ("thickness must be a positive finite number, got '1e400'", overflow("thickness")[1])),
     ("thickness negative", PLATE + "pair_style pd/ordinary plane stress thickness -1e-3\n",
      "thickness must be a positive finite number"),
     ("thickness a word", PLATE + "pair_style pd/ordinary plane stress thickness thick\n", "thick"),
     ("E so large the micromodulus overflows", block(6) + BOND + f"E 1e300 horizon {H}\n",
      "the inputs give c = inf"),
     ("Gc so small s0 underflows to 0", block(6) + ORD + f"{OK_ORD} fail stretch Gc 1e-320\n",
-     "the inputs give s0 = 0"),
+     ("the inputs give s0 = 0", overflow("Gc", "1e-320")[1])),
     ("contact stiffness overflows", block(6) + CONTACT + "stiffness 1e400\n",
-     "stiffness must be a positive finite number, got '1e400'"),
+     ("stiffness must be a positive finite number, got '1e400'", overflow("stiffness")[1])),
     ("contact distance overflows", block(6) + CONTACT + "stiffness 1e20 distance 1e400\n",
-     "distance must be a positive finite number"),
+     ("distance must be a positive finite number", overflow("distance")[1])),
     ("friction overflows", block(6) + "pair_style pd/contact friction 1e400\n",
-     "friction coefficient must be a finite number >= 0, got '1e400'"),
+     ("friction coefficient must be a finite number >= 0, got '1e400'", overflow("friction")[1])),
     ("friction negative", block(6) + "pair_style pd/contact friction -0.1\n",
      "friction coefficient must be a finite number >= 0"),
     ("pre-crack coordinate overflows", block(6) + ORD + f"{OK_ORD}\nfix c all pd/precrack patch 0 0 1e400 1 0 0 0 1 0\n",
-     "coordinate '1e400' must be a finite number"),
+     ("coordinate '1e400' must be a finite number", overflow("x")[1])),
     ("pre-crack of zero area", block(6) + ORD + f"{OK_ORD}\nfix c all pd/precrack patch 0 0 0 1e-3 0 0 2e-3 0 0\n",
      "the crack has zero area"),
     ("pre-crack of zero length", PLATE + "pair_style pd/ordinary plane stress thickness 1e-3\n"
@@ -247,8 +257,9 @@ for ranks in (1, 2):
         out, _ = run(script, d, ranks=ranks, expect_error=True)
         errors = [l for l in out.splitlines() if l.startswith("ERROR")]
         crashed = any(s in out for s in ("Segmentation", "signal 11", "Aborted", "core dumped"))
+        accepted = message if isinstance(message, tuple) else (message,)
         check(f"{what} ({ranks} rank{'s' if ranks > 1 else ''}): ERROR names it",
-              bool(errors) and message in errors[0] and not crashed,
+              bool(errors) and any(m in errors[0] for m in accepted) and not crashed,
               errors[0][:200] if errors else out.strip().splitlines()[-1][:200] if out.strip() else "no output")
 check(f"the catalogue has at least 80 cases ({len(cases)})", len(cases) >= 80)
 finish()
