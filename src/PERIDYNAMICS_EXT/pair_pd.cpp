@@ -83,9 +83,12 @@ void PairPD::allocate()
     for (int j = 0; j <= n; j++) setflag[i][j] = 0;
 }
 
+// The material styles (pd/contact is not one: it stores no bonds).
+static const char *const MATERIAL_STYLES[] = {"pd/bond", "pd/ordinary"};
+
 PairPD *PairPD::active(Force *force)
 {
-  for (const char *s : {"pd/bond", "pd/ordinary"})
+  for (const char *s : MATERIAL_STYLES)
     if (auto *p = dynamic_cast<PairPD *>(force->pair_match(s, 1))) return p;
   return nullptr;
 }
@@ -395,13 +398,12 @@ double PairPD::init_one(int i, int j)
 // (pair_match's nsub = 2 gives the second instance, or the only one).
 void PairPD::check_one_material_style()
 {
-  auto twice = [&](const char *s) {
-    Pair *second = force->pair_match(s, 1, 2);
-    return second && second != force->pair_match(s, 1, 1);
-  };
-  const bool two = twice("pd/bond") || twice("pd/ordinary") ||
-      (force->pair_match("pd/bond", 1, 1) && force->pair_match("pd/ordinary", 1, 1));
-  if (utils::strmatch(force->pair_style, "^hybrid") && two)
+  int instances = 0;
+  for (const char *s : MATERIAL_STYLES) {
+    Pair *first = force->pair_match(s, 1, 1), *second = force->pair_match(s, 1, 2);
+    instances += (first != nullptr) + (second && second != first);
+  }
+  if (utils::strmatch(force->pair_style, "^hybrid") && instances > 1)
     error->all(FLERR, "Pair {}: one pd/ material style per simulation (they would share the "
                "bond families); use one style with several atom types", style_name());
 }

@@ -120,8 +120,7 @@ void PairPDContact::init_style()
   if (!force->newton_pair) error->all(FLERR, "Pair pd/contact needs 'newton on'");
   if (friction > 0.0 && !comm->ghost_velocity)
     error->all(FLERR, "Pair pd/contact with friction needs the ghosts' velocities: 'comm_modify vel yes'");
-  material = dynamic_cast<PairPD *>(force->pair_match("pd/bond", 1));
-  if (!material) material = dynamic_cast<PairPD *>(force->pair_match("pd/ordinary", 1));
+  material = PairPD::active(force);
   dim = domain->dimension;
   thickness = material ? material->plate_thickness() : 0.0;
   if (dim == 2 && !(thickness > 0.0))
