@@ -31,8 +31,8 @@ using namespace FixConst;
 // Tag of the global restart record: bump it whenever the layout of the
 // record or of the per-atom restart data changes.
 static constexpr double RESTART_FORMAT = 20261201.1;
-static constexpr int PER_ATOM_FIXED = 5;
-static constexpr double MAX_INTACT_LENGTH = 11.0;    // stretch 10: no material survives it    // count, own tag, family and weighted volume, dissipated
+static constexpr int PER_ATOM_FIXED = 5;    // count, own tag, family and weighted volume, dissipated
+static constexpr double MAX_INTACT_LENGTH = 11.0;    // stretch 10: no material survives it
 
 // Which end stores a bond: the smaller tag when the tags' sum is even, the
 // larger when odd. Either rule stores each bond once; alternating keeps the
@@ -336,7 +336,8 @@ void FixPDBonds::map_partners(bool setup)
   const int nall = atom->nlocal + atom->nghost;
   double **x = atom->x;
   std::string overstretched;
-  for (int i = 0; i < nowned; i++)
+  bigint kept[2] = {0, 0};    // bonds kept, and how many of them intact (count_lost)
+  for (int i = 0; i < nowned; i++) {
     for (int k = 0; k < npartner[i]; k++) {
       int j = atom->map(partner[i][k]);
       if (j >= nall) j = -1;    // a stale map entry of a deleted atom
@@ -359,9 +360,12 @@ void FixPDBonds::map_partners(bool setup)
         continue;
       }
       far[i][k] = j;
+      kept[1] += r0[i][k] > 0.0;
     }
+    kept[0] += npartner[i];
+  }
   pd_error_collective(lmp, overstretched);
-  const bigint lost = count_lost();
+  const bigint lost = count_lost(kept[0], kept[1]);
   // minimize's line search moves atoms by up to 'min_modify dmax' (0.1
   // length units by default: 10 cm in SI), which tears bonds that physics
   // would keep
@@ -377,13 +381,9 @@ void FixPDBonds::map_partners(bool setup)
 // stored). Counting from both ends makes the count independent of which
 // end stores a bond, and so of the rank count (atom IDs, and so storage,
 // depend on it). A broken bond that vanishes is not counted.
-bigint FixPDBonds::count_lost()
+bigint FixPDBonds::count_lost(bigint stored, bigint intact)
 {
-  bigint mine[3] = {0, breaks_since_map, 0}, sums[3];
-  for (int i = 0; i < nowned; i++) {
-    mine[2] += npartner[i];
-    for (int k = 0; k < npartner[i]; k++) mine[0] += r0[i][k] > 0.0;
-  }
+  bigint mine[3] = {intact, breaks_since_map, stored}, sums[3];
   MPI_Allreduce(mine, sums, 3, MPI_LMP_BIGINT, MPI_SUM, world);
   const bigint lost = intact_at_map < 0 ? 0 : intact_at_map - sums[1] - sums[0];
   intact_at_map = sums[0];

@@ -160,7 +160,7 @@ class FixPDBonds : public Fix {
   double current_length(int i, int k) const;
   void map_partners(bool setup);
   void check_stored_partners();
-  bigint count_lost();
+  bigint count_lost(bigint stored, bigint intact);
   void report_bonds_by_type(const std::vector<bigint> &touching);
   // the blow-up guard (fix_pd_bonds_guard.cpp)
   double guard_step;        // the largest distance an atom may move in one step

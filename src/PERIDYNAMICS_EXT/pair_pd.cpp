@@ -35,7 +35,7 @@ using namespace LAMMPS_NS;
 static const char *const FIX_ID = "PD_BONDS";
 
 PairPD::PairPD(LAMMPS *lmp, const std::vector<std::string> &coef_names) :
-    Pair(lmp), names(coef_names), coef(nullptr), legacy(0), recontact(1), law(PD_FAIL_NONE),
+    Pair(lmp), names(coef_names), coef(nullptr), legacy(0), recontact(RECONTACT_NEAR), law(PD_FAIL_NONE),
     ifail(-1), is0(-1), iGc(-1), ialpha(-1), model_dim(PD_3D), thickness(0.0), lattice_spacing(0.0),
     bonds(nullptr), released(nullptr), fresh(nullptr), maxfresh(0), s0_new(nullptr), nreleased(0),
     report_pending(0), work(nullptr), nwork(0), dt_estimate(0.0), radius(nullptr), nradius(0),

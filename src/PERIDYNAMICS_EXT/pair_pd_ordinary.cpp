@@ -146,12 +146,17 @@ void PairPDOrdinary::init_style()
     per_atom_norm = 1;
     if (dim() != 3) error->all(FLERR, "Pair pd/ordinary legacy reproduces peri/lps, which is 3D");
   }
-  check_one_material_style();
-  order = coef[ORDER][1][1];
-  for (int i = 1; i <= atom->ntypes; i++)
-    if (coef[ORDER][i][i] != order)
-      error->all(FLERR, "Pair pd/ordinary: all types need the same strain order m ({} has {}, 1 has {})",
-                 i, coef[ORDER][i][i], order);
+  // the types this style handles (under hybrid, others may belong to
+  // another sub-style and have no order here)
+  int first = 0;
+  for (int i = 1; i <= atom->ntypes; i++) {
+    if (!setflag[i][i]) continue;
+    if (!first) first = i;
+    if (coef[ORDER][i][i] != coef[ORDER][first][first])
+      error->all(FLERR, "Pair pd/ordinary: all types need the same strain order m ({} has {}, {} has {})",
+                 i, coef[ORDER][i][i], first, coef[ORDER][first][first]);
+  }
+  order = first ? coef[ORDER][first][first] : 0.5;
   if (legacy && order != 0.5)
     error->all(FLERR, "Pair pd/ordinary legacy reproduces peri/lps, which is m = 0.5 (got {})", order);
   PairPD::init_style();
