@@ -145,4 +145,29 @@ check("atoms leave the box (the same on every layout)", values[0][0] < 343 and l
       str(counts))
 check("lost partners: the same count on 1 rank and on 2 ranks split either way",
       len(set(v[1] for v in values)) == 1 and values[0][1] > 0, str(counts))
+# ... and across a restart, with bonds breaking meanwhile: the counts the
+# restart file carries (intact bonds at the last mapping, breaks since) give
+# the same lost and broken counts as the unbroken run, on 1 and 2 ranks
+SPLIT = block(10).replace("atom_modify map array", "atom_modify map hash") + PAIRS["pd/ordinary"].replace(
+    "m 0.5\n", "m 0.5 fail stretch 0.001\n") + """run 0
+group gone id 555
+delete_atoms group gone compress no
+velocity all ramp vx -5 5 x 0 0.005 units box
+fix 1 all nve
+timestep 1e-7
+compute frac all pd/fracture
+thermo_style custom step c_frac[3] c_frac[4]
+run 50
+write_restart split.restart
+run 50
+"""
+check("the split deck breaks bonds and deletes an atom", "fail stretch 0.001" in SPLIT and "map hash" in SPLIT)
+for ranks in (1, 2):
+    _, rows = run(SPLIT, d, ranks=ranks)
+    whole = (rows[-1]["c_frac[3]"], rows[-1]["c_frac[4]"])
+    _, rows = run("read_restart split.restart\nfix 1 all nve\ncompute frac all pd/fracture\n"
+                  "thermo_style custom step c_frac[3] c_frac[4]\nrun 50\n", d, ranks=ranks)
+    restarted = (rows[-1]["c_frac[3]"], rows[-1]["c_frac[4]"])
+    check(f"{ranks} rank(s): broken and lost counts continue across a restart (122 lost: the deleted atom's)",
+          whole == restarted and whole[1] == 122 and whole[0] > 0, f"{whole} vs {restarted}")
 finish()
