@@ -96,10 +96,11 @@ void ComputePDAtom::dilatation(double *out)
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) out[i] = 0.0;
   const pd_bond_view v = bonds->view();
-  pd_ordinary_state st = {0.5, out, nullptr, nullptr, 0, nullptr};
+  pd_ordinary_state st = {0.5, out, nullptr, nullptr};
   pd_failure intact_only = {};    // broken bonds stretch freely: they do not count
   intact_only.recontact = 0;
-  pd_ordinary_dilatation(&v, &st, &intact_only, atom->x[0], atom->vfrac);
+  const pd_loop L = {&v, atom->type, atom->ntypes + 1, atom->x[0], atom->vfrac, nullptr, nullptr, &intact_only};
+  pd_ordinary_dilatation(&L, &st);
   bonds->sum_to_owners(out);
   for (int i = 0; i < atom->nlocal; i++) {
     const double m = bonds->weighted_volume[i];

@@ -592,13 +592,15 @@ pd_failure PairPD::failure_state()
   f.law = law;
   f.recontact = law == PD_FAIL_LEGACY ? 0 : recontact != RECONTACT_NONE;    // PERI drops broken bonds
   f.contact_radius = f.recontact && recontact == RECONTACT_NEAR ? contact_radii() : nullptr;
-  f.s0 = law == PD_FAIL_STRETCH || law == PD_FAIL_LEGACY ? coef[is0][0] : nullptr;
+  if (law == PD_FAIL_STRETCH) {
+    stretch_law = {coef[is0][0]};
+    f.params = &stretch_law;
+  }
   if (law == PD_FAIL_LEGACY) {
     memory->grow(s0_new, nreleased, "pair:s0_new");
     for (int i = 0; i < nall; i++) s0_new[i] = -INFINITY;
-    f.alpha = coef[ialpha][0];
-    f.s0_atom = atom->s0;
-    f.s0_new = s0_new;
+    legacy_law = {coef[is0][0], coef[ialpha][0], atom->s0, s0_new};
+    f.params = &legacy_law;
   }
   f.len0 = bonds->len0_data();
   f.released_atom = released;
@@ -608,6 +610,13 @@ pd_failure PairPD::failure_state()
   // with half their force again, as the first time (see pd_ordinary.c)
   f.replay = law != PD_FAIL_LEGACY && bonds->unbreak_fresh(update->ntimestep);
   return f;
+}
+
+// What one evaluation of the material works on: the bonds, this rank's
+// atoms, and the tally and failure state when the step asks for them.
+pd_loop PairPD::evaluation(const pd_bond_view &v, pd_tally *t, pd_failure *f) const
+{
+  return {&v, atom->type, atom->ntypes + 1, atom->x[0], atom->vfrac, atom->f[0], t, f};
 }
 
 // Half the particle spacing of every atom (owned + ghost), as pd/contact's

@@ -15,6 +15,9 @@
 extern "C" {
 #include "pd_bonds.h"
 #include "pd_failure.h"
+#include "pd_law_legacy.h"
+#include "pd_law_stretch.h"
+#include "pd_loop.h"
 #include "pd_params.h"
 }
 
@@ -105,6 +108,7 @@ class PairPD : public Pair {
   void check_failure(int i, int j, double E, double nu);    // s0 from Gc, validation
   bool failing() const;
   pd_failure failure_state();
+  pd_loop evaluation(const pd_bond_view &v, pd_tally *t, pd_failure *f) const;
   void account_failure(const pd_failure &f);
   double *zero_released();
   void book_released();
@@ -112,6 +116,8 @@ class PairPD : public Pair {
   int *fresh;               // len0 indices of the bonds one evaluation broke (malloc'd by the core)
   int maxfresh;
   double *s0_new;           // legacy failure: the new per-atom s0 (owned + ghost)
+  pd_law_stretch stretch_law;   // the law parameters of one evaluation
+  pd_law_legacy legacy_law;
   int nreleased;
   double dt_estimate;
   double *radius;           // per-atom contact radius (owned + ghost)

@@ -105,7 +105,7 @@ void PairPDBond::compute(int eflag, int vflag)
   if (report_pending) report_setup();
 
   const pd_bond_view v = bonds->view();
-  const pd_pmb mat = {atom->ntypes + 1, coef[MICROMODULUS][0]};
+  const pd_pmb mat = {coef[MICROMODULUS][0]};
   pd_tally t = {};
   t.eatom = eflag_atom ? eatom : nullptr;
   pd_tally *tp = evflag ? &t : nullptr;
@@ -114,15 +114,18 @@ void PairPDBond::compute(int eflag, int vflag)
       error->all(FLERR, "Pair pd/bond: microplastic bonds cannot be broken (no failure law or "
                  "pre-crack in a style with microplastic pairs)");
     pd_microplastic mp = {coef[YIELD][0], bonds->history_data(), 0.0, 0.0, zero_released()};
-    pd_microplastic_forces(&v, &mat, &mp, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
+    const pd_loop L = evaluation(v, tp, nullptr);
+    pd_microplastic_forces(&L, &mat, &mp);
     bonds->add_dissipated(mp.dissipated, mp.dissipated_joule);
     book_released();
   } else if (failing()) {
     pd_failure fail = failure_state();
-    pd_pmb_forces(&v, &mat, &fail, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
+    const pd_loop L = evaluation(v, tp, &fail);
+    pd_pmb_forces(&L, &mat);
     account_failure(fail);
   } else {
-    pd_pmb_forces(&v, &mat, nullptr, atom->type, atom->x[0], atom->vfrac, atom->f[0], tp);
+    const pd_loop L = evaluation(v, tp, nullptr);
+    pd_pmb_forces(&L, &mat);
   }
   if (evflag) tally(t);
   pvector[0] = bonds->local_dissipated();    // compute pair sums it over ranks
@@ -131,8 +134,8 @@ void PairPDBond::compute(int eflag, int vflag)
 void PairPDBond::stable_dt_sum(double *sum)
 {
   const pd_bond_view v = bonds->view();
-  const pd_pmb mat = {atom->ntypes + 1, coef[MICROMODULUS][0]};
-  pd_pmb_stiffness(&v, &mat, atom->type, atom->vfrac, sum);
+  const pd_pmb mat = {coef[MICROMODULUS][0]};
+  pd_pmb_stiffness(&v, &mat, atom->type, atom->ntypes + 1, atom->vfrac, sum);
 }
 
 void PairPDBond::write_restart_settings(FILE *fp)

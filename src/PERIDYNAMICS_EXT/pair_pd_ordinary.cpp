@@ -23,6 +23,7 @@
 
 extern "C" {
 #include "pd_influence.h"
+#include "pd_law_energy.h"
 #include "pd_ordinary.h"
 #include "pd_params.h"
 #include "pd_timestep.h"
@@ -71,12 +72,11 @@ int PairPDOrdinary::parse_setting(int narg, char **arg, int iarg)
   }
   if (strcmp(arg[iarg], "influence") != 0) return 0;
   if (iarg + 1 >= narg)
-    error->all(FLERR, "Pair pd/ordinary: 'influence' needs a name (constant, inverse, lps, tupek, "
-               "gaussian)");
+    error->all(FLERR, "Pair pd/ordinary: 'influence' needs a name ({})", pd_influence_names());
   influence = pd_influence_from_name(arg[iarg + 1]);
   if (influence < 0)
-    error->all(FLERR, "Pair pd/ordinary: unknown influence function '{}' (constant, inverse, lps, "
-               "tupek, gaussian)", arg[iarg + 1]);
+    error->all(FLERR, "Pair pd/ordinary: unknown influence function '{}' ({})", arg[iarg + 1],
+               pd_influence_names());
   return 2;
 }
 
@@ -267,15 +267,16 @@ void PairPDOrdinary::compute(int eflag, int vflag)
     memory->destroy(strain);
     memory->create(strain, nstrain, "pair:strain");
   }
-  pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr, atom->ntypes + 1, crit};
+  pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr};
   const bool fails = failing();
   pd_failure fail = fails ? failure_state() : pd_failure{};
   pd_failure *fp = fails ? &fail : nullptr;
-  pd_ordinary_dilatation(&v, &st, fp, atom->x[0], atom->vfrac);
-  bonds->sum_to_owners(sum);
-
   pd_tally t = {};
   t.eatom = eflag_atom ? eatom : nullptr;
+  const pd_loop L = evaluation(v, evflag ? &t : nullptr, fp);
+  pd_ordinary_dilatation(&L, &st);
+  bonds->sum_to_owners(sum);
+
   for (int i = 0; i < nlocal; i++) {
     const int ti = type[i];
     const pd_ordinary_atom_out o = pd_ordinary_atom(lambda_bar[ti], mu_bar[ti], norm(i), sum[i]);
@@ -291,10 +292,11 @@ void PairPDOrdinary::compute(int eflag, int vflag)
   if (law == PD_FAIL_ENERGY) {
     // beta N is fixed per atom: ghosts need it again only after reneighboring
     for (int i = 0; i < nlocal; i++) crit[i] = beta[type[i]] * norm(i);
-    st.gc = gc_pair;
+    energy_law = {crit, gc_pair};
+    fail.params = &energy_law;
     if (neighbor->ago == 0) bonds->copy_to_ghosts(crit);
   }
-  pd_ordinary_forces(&v, &st, fp, atom->type, atom->x[0], atom->vfrac, atom->f[0], evflag ? &t : nullptr);
+  pd_ordinary_forces(&L, &st);
   if (fails) account_failure(fail);
   if (evflag) tally(t);
 }

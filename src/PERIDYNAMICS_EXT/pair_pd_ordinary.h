@@ -14,6 +14,10 @@ PairStyle(pd/ordinary,PairPDOrdinary);
 
 #include "pair_pd.h"
 
+extern "C" {
+#include "pd_law_energy.h"
+}
+
 namespace LAMMPS_NS {
 
 class PairPDOrdinary : public PairPD {
@@ -44,6 +48,7 @@ class PairPDOrdinary : public PairPD {
   double *beta;        // per type: energy-failure beta (T14 eq. 6.3) for G_c = 1
   double *crit;        // per atom beta N for G_c = 1 (energy law; owned + ghost)
   double *gc_pair;     // per type pair G_c of the energy law (+inf: no failure)
+  struct pd_law_energy energy_law;    // its parameters for one evaluation
 
   int parse_setting(int, char **, int) override;
   void check_coeff(int, int) override;

@@ -1,6 +1,7 @@
 #include "model.h"
 
 #include "pd_bond_based.h"
+#include "pd_law_energy.h"
 #include "pd_ordinary.h"
 
 #include <stdlib.h>
@@ -18,10 +19,10 @@ double pmb_eval(const lattice *l, double c, const double *x, double *f, double *
   double *psi = calloc(l->natoms, sizeof(double));
   memset(f, 0, sizeof(double) * 3 * l->natoms);
   pd_bond_view v = lattice_view(l);
-  pd_pmb mat = {1, &c};
+  pd_pmb mat = {&c};
   pd_tally t = {0};
   t.eatom = psi;
-  pd_pmb_forces(&v, &mat, NULL, l->type, x, l->vol, f, &t);
+  pd_pmb_forces(&(pd_loop){&v, l->type, 1, x, l->vol, f, &t, NULL}, &mat);
   const double e = total(l, psi);
   if (psi_out) memcpy(psi_out, psi, sizeof(double) * l->natoms);
   free(psi);
@@ -63,8 +64,13 @@ static double ordinary_run(const lattice *l, double lambda, double mu, double or
   /* use the per-bond strain cache on odd calls, so both paths are tested */
   static int calls;
   static const double unit_gc = 1.0; /* crit is beta N for the whole G_c */
-  pd_ordinary_state st = {order, sum, ab, (calls++ & 1) ? strain : NULL, 1, crit, crit ? &unit_gc : NULL};
-  pd_ordinary_dilatation(&v, &st, fail, x, l->vol);
+  pd_ordinary_state st = {order, sum, ab, (calls++ & 1) ? strain : NULL};
+  const pd_law_energy energy = {crit, &unit_gc};
+  if (fail && crit) fail->params = &energy;
+  pd_tally t = {0};
+  t.eatom = psi;
+  const pd_loop L = {&v, l->type, 1, x, l->vol, f, &t, fail};
+  pd_ordinary_dilatation(&L, &st);
   for (int i = 0; i < n; i++) {
     const pd_ordinary_atom_out o = pd_ordinary_atom(lambda, mu, dim / m[i], sum[i]);
     ab[2 * i] = o.a;
@@ -73,9 +79,7 @@ static double ordinary_run(const lattice *l, double lambda, double mu, double or
     if (theta_out) theta_out[i] = o.theta;
   }
   memset(f, 0, sizeof(double) * 3 * n);
-  pd_tally t = {0};
-  t.eatom = psi;
-  pd_ordinary_forces(&v, &st, fail, l->type, x, l->vol, f, &t);
+  pd_ordinary_forces(&L, &st);
   if (ab_out) memcpy(ab_out, ab, sizeof(double) * 2 * n);
   const double e = total(l, psi);
   if (psi_out) memcpy(psi_out, psi, sizeof(double) * n);

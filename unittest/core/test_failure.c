@@ -6,6 +6,8 @@
 #include "model.h"
 #include "pd_bond_based.h"
 #include "pd_failure.h"
+#include "pd_law_energy.h"
+#include "pd_law_stretch.h"
 #include "pd_macros.h"
 #include "pd_params.h"
 #include "pd_precrack.h"
@@ -126,13 +128,14 @@ int main(void)
     l.vol[0] = 2e-9;
     l.vol[1] = 3e-9;
     pd_bond_view v = lattice_view(&l);
-    pd_pmb mat = {1, &c};
+    pd_pmb mat = {&c};
     double x[6] = {0, 0, 0, h * 1.009, 0, 0}, f[6] = {0};
-    pd_failure fail = {.law = PD_FAIL_STRETCH, .recontact = 1, .s0 = &s0, .len0 = l.len0};
-    pd_pmb_forces(&v, &mat, &fail, l.type, x, l.vol, f, NULL);
+    const pd_law_stretch stretch = {&s0};
+    pd_failure fail = {.law = PD_FAIL_STRETCH, .params = &stretch, .recontact = 1, .len0 = l.len0};
+    pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, &fail}, &mat);
     check_true("PMB: below s0 nothing breaks", fail.nbroken == 0 && l.len0[0] > 0.0);
     x[3] = h * 1.011;
-    pd_pmb_forces(&v, &mat, &fail, l.type, x, l.vol, f, NULL);
+    pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, &fail}, &mat);
     check_true("PMB: above s0 the bond breaks", fail.nbroken == 1 && l.len0[0] < 0.0);
     const double sb = 0.011;
     check_rel("PMB: released energy 1/2 c s^2 |xi| V_i V_j", fail.released_joule,

@@ -91,14 +91,14 @@ int main(void)
     const double c = 1e20, sy = 1e-3, big = 1e300;
     double plastic = 0.0, x[6] = {0, 0, 0, h, 0, 0}, f[6];
     pd_bond_view v = lattice_view(&l);
-    pd_pmb mat = {1, &c};
+    pd_pmb mat = {&c};
     pd_microplastic mp = {.sy = &sy, .plastic = &plastic};
     const double stretches[] = {1e-3, 2e-3, 3e-3, 2e-3, 0.0};
     double force[5];
     for (int k = 0; k < 5; k++) {
       x[3] = h * (1.0 + stretches[k]);
       for (int q = 0; q < 6; q++) f[q] = 0.0;
-      pd_microplastic_forces(&v, &mat, &mp, l.type, x, l.vol, f, NULL);
+      pd_microplastic_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, NULL}, &mat, &mp);
       force[k] = f[0];
     }
     check_rel("microplastic: force at yield is c sy", force[0], c * sy, 1e-9);
@@ -111,8 +111,8 @@ int main(void)
     double plastic2 = 0.0, g[6] = {0}, f2[6] = {0};
     pd_microplastic mp2 = {.sy = &big, .plastic = &plastic2};
     x[3] = h * 1.01;
-    pd_microplastic_forces(&v, &mat, &mp2, l.type, x, l.vol, g, NULL);
-    pd_pmb_forces(&v, &mat, NULL, l.type, x, l.vol, f2, NULL);
+    pd_microplastic_forces(&(pd_loop){&v, l.type, 1, x, l.vol, g, NULL, NULL}, &mat, &mp2);
+    pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f2, NULL, NULL}, &mat);
     check_true("microplastic with an unreachable yield stretch is PMB exactly", g[0] == f2[0] && g[3] == f2[3]);
     l.natoms = 8;
     lattice_free(&l);

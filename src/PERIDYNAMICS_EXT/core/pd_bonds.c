@@ -1,28 +1,19 @@
 #include "pd_bonds.h"
 
+#include "pd_bond_loop.h"
+
+static inline void weight_both_ends(const void *ctx, const pd_bond *bd, double *a, double *b)
+{
+  (void) ctx;
+  *a = *b = bd->w;
+}
+
 void pd_weighted_volume(const pd_bond_view *b, const double *vol, double *m)
 {
-  for (int i = 0; i < b->nowner; i++) {
-    const int row = i * b->stride;
-    for (int k = 0; k < b->count[i]; k++) {
-      const int j = b->far[row + k];
-      const double w = b->weight ? b->weight[row + k] : 1.0;
-      m[i] += w * vol[j];
-      m[j] += w * vol[i];
-    }
-  }
+  pd_reference_sums(b, NULL, 0, vol, m, NULL, weight_both_ends, 0);
 }
 
 void pd_intact_volume(const pd_bond_view *b, const double *vol, double *m)
 {
-  for (int i = 0; i < b->nowner; i++) {
-    const int row = i * b->stride;
-    for (int k = 0; k < b->count[i]; k++) {
-      if (b->len0[row + k] < 0.0) continue;
-      const int j = b->far[row + k];
-      const double w = b->weight ? b->weight[row + k] : 1.0;
-      m[i] += w * vol[j];
-      m[j] += w * vol[i];
-    }
-  }
+  pd_reference_sums(b, NULL, 0, vol, m, NULL, weight_both_ends, 1);
 }

@@ -17,6 +17,28 @@ typedef struct pd_bond_view {
                             volume), or NULL when every weight is 1 */
 } pd_bond_view;
 
+/* One bond as the bond loops (pd_bond_loop.h) hand it to a material and a
+ * failure law. */
+typedef struct pd_bond {
+  int i, j;        /* owner and far end (local indices) */
+  int idx;         /* its slot in the bond tables */
+  int ti, tj;      /* their types */
+  int tij;         /* ti * ntypes + tj: the bond's entry in a type-pair table */
+  int broken;      /* broken: acts only in compression (recontact) */
+  double r0;       /* reference length it acts with */
+  double w;        /* quadrature weight (1 without weights) */
+  double len;      /* current length (not set in reference walks) */
+  double d[3];     /* x_j - x_i (not set in reference walks) */
+} pd_bond;
+
+/* What a material answers for one bond of strain eps. */
+typedef struct pd_bond_force {
+  double t;                    /* force state: f_i += V_j t e_ij, f_j -= V_i t e_ij */
+  double stored_i, stored_j;   /* energy density it stores at each end, per
+                                  unit volume of the partner (tallied) */
+  double release_i, release_j; /* what it releases at each end if it breaks now */
+} pd_bond_force;
+
 /* Weighted volume over every bond, at both ends: m_i += w V_j, m_j += w V_i
  * (w = 1 without weights: the family volume). */
 void pd_weighted_volume(const pd_bond_view *b, const double *vol, double *m);

@@ -10,42 +10,35 @@
 #ifndef PD_ORDINARY_H
 #define PD_ORDINARY_H
 
-#include "pd_bonds.h"
-#include "pd_failure.h"
+#include "pd_loop.h"
 
 /* Per-step work arrays over owned and ghost atoms. */
 typedef struct pd_ordinary_state {
-  double order;   /* Seth-Hill order m */
+  double order;    /* Seth-Hill order m */
   double *sum;     /* dilatation sums, before normalization */
   const double *ab;/* per atom, interleaved: A = lambda theta N, B = 2 mu N */
   double *strain;  /* per-bond scratch laid out as the bonds, or NULL: for
                       m != 1/2 the dilatation pass stores each bond's strain
                       there and the force pass reuses it (one log per bond) */
-  int ntypes;      /* row length of the failure tables */
-  const double *crit; /* per atom beta N for G_c = 1 (energy law, owned + ghost), or NULL */
-  const double *gc;   /* per type pair G_c of the bonds between them (energy
-                         law; +inf: they do not fail), or NULL */
 } pd_ordinary_state;
 
 /* Dilatation sums: st->sum[i] += w eps V_j, st->sum[j] += w eps V_i.
  * The caller zeroes st->sum over owned and ghost atoms and then sums the
  * ghosts' share onto their owners. */
-void pd_ordinary_dilatation(const pd_bond_view *b, const pd_ordinary_state *st,
-                            const pd_failure *fail, const double *x, const double *vol);
+void pd_ordinary_dilatation(const pd_loop *L, const pd_ordinary_state *st);
 
-/* Force density on every bond end; with tally, the bond part of the energy
+/* Force density on every bond end; with a tally, the bond part of the energy
  * (B/2 w eps^2 V_other at each end) and the virial. The dilatation part of
- * the energy is per atom: see pd_ordinary_atom. With fail (NULL: no bond is
- * or can be broken), broken bonds act only in compression (recontact), and
- * an intact bond in tension breaks (acting with half its force that once) when its
- * stretch exceeds s0 (stretch law) or when the instantaneous bond energies at its ends,
- * s = w eps (A + B eps / 2) per partner volume (T14 eq. 6.5), reach
- * s_c(i) + s_c(j) = G_c w (crit_i + crit_j) / |xi|^2 (energy law, T14 eq. 6.3,
- * crit = beta N per unit G_c, G_c of the bond's type pair: an interface
- * has its own). The released energy is s_i V_j + s_j V_i. */
-void pd_ordinary_forces(const pd_bond_view *b, const pd_ordinary_state *st, pd_failure *fail,
-                        const int *type, const double *x, const double *vol, double *f,
-                        pd_tally *tally);
+ * the energy is per atom: see pd_ordinary_atom. With L->fail, broken bonds
+ * act only in compression (recontact), and intact bonds break by its law; a breaking bond releases at each end
+ * its instantaneous energy s = w eps (A + B eps / 2) per partner volume
+ * (T14 eq. 6.5): s_i V_j + s_j V_i in all. */
+void pd_ordinary_forces(const pd_loop *L, const pd_ordinary_state *st);
+
+/* Stable time step sums (pd_timestep.h): |C| <= (k_i + k_j) w / |xi|^2 with
+ * k = N (2 mu + d |lambda|) per atom; the d |lambda| part bounds the
+ * coupling through the dilatation (Cauchy-Schwarz over the family). */
+void pd_ordinary_stiffness(const pd_bond_view *b, const double *k, const double *vol, double *sum);
 
 /* Per-atom state from the summed dilatation: theta, A, B and the
  * dilatation part of the energy density, lambda/2 theta^2. */

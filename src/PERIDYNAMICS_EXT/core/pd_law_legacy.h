@@ -1,0 +1,37 @@
+/* LAMMPS PERI's rule (legacy mode): a bond breaks after its force acted
+ * when its stretch exceeds min(s0_i, s0_j) of the previous step, and each
+ * atom's s0 becomes max over its intact bonds of (s00 - alpha stretch). */
+#ifndef PD_LAW_LEGACY_H
+#define PD_LAW_LEGACY_H
+
+#include "pd_failure.h"
+
+typedef struct pd_law_legacy {
+  const double *s00;      /* per type pair */
+  const double *alpha;    /* per type pair */
+  const double *s0_atom;  /* per atom s0 of the previous step (owned + ghost) */
+  double *s0_new;         /* per atom new s0: a max over both ends, -inf where
+                             no intact bond was seen (owned + ghost) */
+} pd_law_legacy;
+
+static inline int pd_law_legacy_now(const pd_failure *f, const pd_bond *bd, double eps,
+                                    const pd_bond_force *bf)
+{
+  (void) f, (void) bd, (void) eps, (void) bf;
+  return 0;
+}
+
+static inline int pd_law_legacy_after(const pd_failure *f, const pd_bond *bd, double eps)
+{
+  (void) eps;
+  const pd_law_legacy *p = (const pd_law_legacy *) f->params;
+  const int tij = bd->tij;
+  const double s = (bd->len - bd->r0) / bd->r0;
+  const double cand = p->s00[tij] - p->alpha[tij] * s;
+  if (cand > p->s0_new[bd->i]) p->s0_new[bd->i] = cand;
+  if (cand > p->s0_new[bd->j]) p->s0_new[bd->j] = cand;
+  const double lim = p->s0_atom[bd->i] < p->s0_atom[bd->j] ? p->s0_atom[bd->i] : p->s0_atom[bd->j];
+  return s > lim;
+}
+
+#endif

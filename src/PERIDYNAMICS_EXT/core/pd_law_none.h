@@ -1,0 +1,21 @@
+/* No failure law: no bond breaks, but some may be broken already (a
+ * pre-crack), so the loop still decodes them. */
+#ifndef PD_LAW_NONE_H
+#define PD_LAW_NONE_H
+
+#include "pd_failure.h"
+
+static inline int pd_law_none_now(const pd_failure *f, const pd_bond *bd, double eps,
+                                  const pd_bond_force *bf)
+{
+  (void) f, (void) bd, (void) eps, (void) bf;
+  return 0;
+}
+
+static inline int pd_law_none_after(const pd_failure *f, const pd_bond *bd, double eps)
+{
+  (void) f, (void) bd, (void) eps;
+  return 0;
+}
+
+#endif

@@ -1,0 +1,33 @@
+/* Critical stretch (MS07 eq. 25-29): an intact bond breaks once its stretch
+ * exceeds s0 of its type pair, in the evaluation where it does. */
+#ifndef PD_LAW_STRETCH_H
+#define PD_LAW_STRETCH_H
+
+#include "pd_failure.h"
+
+typedef struct pd_law_stretch {
+  const double *s0;    /* per type pair (+inf: the pair does not fail) */
+} pd_law_stretch;
+
+static inline int pd_law_stretch_now(const pd_failure *f, const pd_bond *bd, double eps,
+                                     const pd_bond_force *bf)
+{
+  (void) eps, (void) bf;
+  const pd_law_stretch *p = (const pd_law_stretch *) f->params;
+  return (bd->len - bd->r0) / bd->r0 > p->s0[bd->tij];
+}
+
+static inline int pd_law_stretch_after(const pd_failure *f, const pd_bond *bd, double eps)
+{
+  (void) f, (void) bd, (void) eps;
+  return 0;
+}
+
+/* Critical stretch from the fracture energy for bond-based elasticity
+ * (MS07 eq. 28-29 and the 2D analogues in THEORY.md): 3D sqrt(5 G / (9 K
+ * delta)) with K = E / (3 (1 - 2 nu)), plane stress sqrt(4 pi G / (9 E delta)),
+ * plane strain sqrt(5 pi G / (12 E delta)). dim: 3, or 2 with plane = 0
+ * (stress) or 1 (strain). */
+double pd_critical_stretch(int dim, int plane_strain, double E, double nu, double delta, double Gc);
+
+#endif

@@ -1,0 +1,23 @@
+/* The failure laws, registered here once. Each law lives in its own
+ * header (pd_law_<name>.h): its parameters and the two questions the bond
+ * loop asks it (pd_bond_loop.h):
+ *   pd_law_<name>_now   does an intact bond break in this evaluation,
+ *                       before its force acts (it then acts with half)?
+ *   pd_law_<name>_after does it break after its force acted?
+ * To add a law: write its header, add one line to the list below and its
+ * #include to pd_law_hooks.h. */
+#ifndef PD_LAWS_H
+#define PD_LAWS_H
+
+/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after. */
+#define PD_FAILURE_LAWS(X, ...)          \
+  X(NONE, none, __VA_ARGS__)             \
+  X(STRETCH, stretch, __VA_ARGS__)       \
+  X(ENERGY, energy, __VA_ARGS__)         \
+  X(LEGACY, legacy, __VA_ARGS__)
+
+#define PD_LAW_ENUM(ID, name, ...) PD_FAIL_##ID,
+typedef enum pd_fail_law { PD_FAILURE_LAWS(PD_LAW_ENUM, ~) PD_NLAWS } pd_fail_law;
+#undef PD_LAW_ENUM
+
+#endif

@@ -1,0 +1,18 @@
+/* What one evaluation of a material works on, besides the material. */
+#ifndef PD_LOOP_H
+#define PD_LOOP_H
+
+#include "pd_bonds.h"
+#include "pd_failure.h"
+
+typedef struct pd_loop {
+  const pd_bond_view *b;
+  const int *type;
+  int ntypes;              /* row length of the type-pair tables (pd_bond.tij) */
+  const double *x, *vol;   /* 3 per atom; 1 per atom (owned + ghost) */
+  double *f;               /* force density, 3 per atom */
+  pd_tally *tally;         /* energy and virial, or NULL */
+  pd_failure *fail;        /* NULL: no bond is or can be broken */
+} pd_loop;
+
+#endif
