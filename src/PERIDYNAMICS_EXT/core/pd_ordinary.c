@@ -44,17 +44,11 @@ ordinary_bond(int kind, const pd_ordinary_state *st, const pd_bond *bd, double e
   return bf;
 }
 
-/* The hooks of each strain order: computed, stored (dilatation pass) or
- * read back from the store (force pass). */
+/* The hooks of each strain order: strain computed, force. */
 #define ORDER_HOOKS(KIND, name)                                                           \
   static inline double strain_##name(void *st, const pd_bond *bd)                         \
   {                                                                                       \
     return bond_strain(KIND, ((const pd_ordinary_state *) st)->order, bd);                \
-  }                                                                                       \
-  static inline double strain_##name##_stored(void *st, const pd_bond *bd)                \
-  {                                                                                       \
-    const pd_ordinary_state *s = (const pd_ordinary_state *) st;                          \
-    return s->strain[bd->idx] = bond_strain(KIND, s->order, bd);                          \
   }                                                                                       \
   static inline pd_bond_force force_##name(void *st, const pd_bond *bd, double eps)       \
   {                                                                                       \
@@ -63,6 +57,17 @@ ordinary_bond(int kind, const pd_ordinary_state *st, const pd_bond *bd, double e
 ORDER_HOOKS(ORDER_HALF, half)
 ORDER_HOOKS(ORDER_LOG, log)
 ORDER_HOOKS(ORDER_ANY, any)
+
+/* m != 1/2: the dilatation pass stores each bond's strain, the force pass
+ * reads it back (one log per bond). */
+#define STORED_STRAIN_HOOK(KIND, name)                                                    \
+  static inline double strain_##name##_stored(void *st, const pd_bond *bd)                \
+  {                                                                                       \
+    const pd_ordinary_state *s = (const pd_ordinary_state *) st;                          \
+    return s->strain[bd->idx] = bond_strain(KIND, s->order, bd);                          \
+  }
+STORED_STRAIN_HOOK(ORDER_LOG, log)
+STORED_STRAIN_HOOK(ORDER_ANY, any)
 
 static inline double strain_cached(void *st, const pd_bond *bd)
 {
