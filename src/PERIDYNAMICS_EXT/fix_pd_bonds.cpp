@@ -404,8 +404,9 @@ void FixPDBonds::check_stored_partners()
   MPI_Allreduce(&damaged, &total_damaged, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   MPI_Allreduce(&claimed, &bad_count, 1, MPI_LMP_BIGINT, MPI_MAX, world);
   if (total_damaged)
-    error->all(FLERR, "Fix pd/bonds: {} atoms arrived with a bond count outside 0 to {} (e.g. {}): "
-               "the restart file is damaged", total_damaged, maxpartner, bad_count);
+    error->all(FLERR, "Fix pd/bonds: {} atoms arrived with a bond count outside 0 to {} (e.g. {}) or "
+               "a record longer or shorter than its count and the listed per-atom fields make: the "
+               "restart file is damaged", total_damaged, maxpartner, bad_count);
   bigint bad = 0;
   tagint example = 0;
   for (int i = 0; i < atom->nlocal; i++)

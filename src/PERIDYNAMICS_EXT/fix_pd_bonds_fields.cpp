@@ -54,7 +54,7 @@ int FixPDBonds::add_field(const PDField &decl)
   if (id >= 0) {
     Field &f = fields[id];
     if (f.decl.width != decl.width)
-      error->all(FLERR, "Fix pd/bonds: per-atom field '{}' has {} values per atom {}, {} now", decl.name,
+      error->all(FLERR, "Fix pd/bonds: per-atom field '{}' has width {} {}, {} now", decl.name,
                  f.decl.width, f.provisional ? "in the restart file" : "as first declared", decl.width);
     if (!f.provisional && f.decl.flags != decl.flags)
       error->all(FLERR, "Fix pd/bonds: per-atom field '{}' declared again with other flags ({}, first {})",
@@ -65,9 +65,9 @@ int FixPDBonds::add_field(const PDField &decl)
   } else {
     // state that a restart file should have carried would start from zero
     if (fields_from_file && built && (decl.flags & PDField::RESTART))
-      error->all(FLERR, "Fix pd/bonds: the restart file carries no per-atom field '{}' ({} values per "
-                 "atom), which the pair style keeps in restart files: the file was written with "
-                 "another pair style or by another build", decl.name, decl.width);
+      error->all(FLERR, "Fix pd/bonds: the restart file carries no per-atom field '{}' (width {}), which "
+                 "the pair style keeps in restart files: the file was written with another pair "
+                 "style or by another build", decl.name, decl.width);
     Field f = {decl, nullptr, false};
     const bigint n = (bigint) atom->nmax * decl.width;
     if (n > MAXSMALLINT) error->all(FLERR, "Fix pd/bonds: per-atom field '{}' is too large", decl.name);
@@ -177,8 +177,8 @@ void FixPDBonds::read_field_list(const double *p, const double *end)
     p += ndoubles;
     int id = find_field(name);
     if (id >= 0 && fields[id].decl.width != (int) width)
-      error->all(FLERR, "Fix pd/bonds: per-atom field '{}' has {} values per atom in the restart file, "
-                 "{} in this build: the file cannot be read by it", name, (int) width, fields[id].decl.width);
+      error->all(FLERR, "Fix pd/bonds: per-atom field '{}' has width {} in the restart file, {} in "
+                 "this build: the file cannot be read by it", name, (int) width, fields[id].decl.width);
     for (int seen : restart_read)
       if (seen == id) damaged_list();
     if (id < 0) {
@@ -192,8 +192,8 @@ void FixPDBonds::read_field_list(const double *p, const double *end)
     bool listed = false;
     for (int r : restart_read) listed = listed || r == (int) id;
     if ((fields[id].decl.flags & PDField::RESTART) && !listed)
-      error->all(FLERR, "Fix pd/bonds: the restart file carries no per-atom field '{}' ({} values per "
-                 "atom): it was written by another build", fields[id].decl.name, fields[id].decl.width);
+      error->all(FLERR, "Fix pd/bonds: the restart file carries no per-atom field '{}' (width {}): it "
+                 "was written by another build", fields[id].decl.name, fields[id].decl.width);
   }
   fields_from_file = true;
 }
