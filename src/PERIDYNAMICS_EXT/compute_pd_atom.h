@@ -12,7 +12,9 @@ ComputeStyle(pd/atom,ComputePDAtom);
 #define LMP_COMPUTE_PD_ATOM_H
 
 #include "compute.h"
+#include "pd_field.h"
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -26,14 +28,26 @@ class ComputePDAtom : public Compute {
   double memory_usage() override;
 
  private:
-  enum Field { DILATATION, ENERGY };
-  std::vector<Field> fields;
+  // ENERGY: the pair's per-atom energy; BOND_DILATATION: the linear
+  // dilatation from the bonds (no style declares one); FIELD: a declared
+  // per-atom field of the bond store
+  enum Source { ENERGY, BOND_DILATATION, FIELD };
+  struct Output {
+    std::string name;
+    Source source;
+    int width;
+    int id;    // the store's field id (FIELD)
+  };
+  std::vector<Output> outputs;
+  int ncols;
   int nmax;
-  double *scratch;      // one field over owned + ghost atoms
-  double *vector;       // single field output
-  double **array;       // several fields output
+  double *scratch;      // one computed value over owned + ghost atoms
+  double *vector;       // single value output
+  double **array;       // several columns
   class FixPDBonds *bonds;
 
+  std::vector<PDField> known_fields() const;
+  std::string available(const std::vector<PDField> &) const;
   void dilatation(double *out);
   void energy_density(double *out);
 };

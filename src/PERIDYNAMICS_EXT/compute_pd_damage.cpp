@@ -56,7 +56,7 @@ void ComputePDDamage::compute_peratom()
   if (!weighted) v.weight = nullptr;
   pd_intact_volume(&v, atom->vfrac, damage);    // intact family (weighted) volume
   bonds->sum_to_owners(damage);
-  const double *reference = weighted ? bonds->weighted_volume : bonds->family_volume;
+  const double *reference = weighted ? bonds->weighted_volume() : bonds->family_volume();
   for (int i = 0; i < atom->nlocal; i++) {
     const double all = reference[i];
     damage[i] = (all > 0.0 && (atom->mask[i] & groupbit)) ? 1.0 - damage[i] / all : 0.0;

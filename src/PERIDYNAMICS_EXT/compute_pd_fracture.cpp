@@ -57,8 +57,8 @@ void ComputePDFracture::compute_peratom()
     memory->create(dissipated, nmax, "pd/fracture:dissipated");
     vector_atom = dissipated;
   }
-  for (int i = 0; i < atom->nlocal; i++)
-    dissipated[i] = (atom->mask[i] & groupbit) ? bonds->dissipated_atom[i] : 0.0;
+  const double *booked = bonds->dissipated_atom();
+  for (int i = 0; i < atom->nlocal; i++) dissipated[i] = (atom->mask[i] & groupbit) ? booked[i] : 0.0;
 }
 
 double ComputePDFracture::memory_usage()

@@ -30,8 +30,8 @@ using namespace FixConst;
 
 // Tag of the global restart record: bump it whenever the layout of the
 // record or of the per-atom restart data changes.
-static constexpr double RESTART_FORMAT = 20261201.1;
-static constexpr int PER_ATOM_FIXED = 5;    // count, own tag, family and weighted volume, dissipated
+static constexpr double RESTART_FORMAT = 20261201.2;
+static constexpr int PER_ATOM_FIXED = 2;    // count, own tag (then the fields, then the bonds)
 static constexpr double MAX_INTACT_LENGTH = 11.0;    // stretch 10: no material survives it
 
 // Which end stores a bond: the smaller tag when the tags' sum is even, the
@@ -44,12 +44,13 @@ static inline bool owns_bond(tagint me, tagint other)
 }
 
 FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), family_volume(nullptr), weighted_volume(nullptr), dissipated_atom(nullptr), owner(nullptr), built_tag(nullptr),
+    Fix(lmp, narg, arg), owner(nullptr), built_tag(nullptr),
     use_weights(0), nhistory(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
     r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), nlost_reported(0), dissipated(0.0), dissipated_joule(0.0), nbroken_local(0), any_broken(0),
     family_key(0.0), fresh_step(-1), list(nullptr), guard_step(INFINITY), damaged(0), damaged_example(0),
     intact_at_map(-1), breaks_since_map(0), stored_total(0),
-    comm_array(nullptr), comm_width(1), comm_max(0)
+    comm_array(nullptr), comm_width(1), comm_max(0), idissipated(-1), ifamily_volume(-1),
+    iweighted_volume(-1), fields_from_file(false)
 {
   if (strcmp(id, "PD_BONDS") != 0)
     error->all(FLERR, "Fix pd/bonds is created by the pd/ pair styles (as PD_BONDS); do not define it by hand");
@@ -73,12 +74,16 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
   comm_forward = 2;
   comm_reverse = 2;
   maxexchange_dynamic = 1;    // the exchange size follows the longest family
-  maxexchange = per_atom_max();
+  maxexchange = per_atom_max(PDField::MIGRATE);
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nmax; i++) set_arrays(i);
+  const std::vector<PDField> own = own_fields();
+  idissipated = add_field(own[0]);
+  ifamily_volume = add_field(own[1]);
+  iweighted_volume = add_field(own[2]);
 }
 
 FixPDBonds::~FixPDBonds()
@@ -91,10 +96,8 @@ FixPDBonds::~FixPDBonds()
   memory->destroy(weight);
   memory->destroy(history);
   memory->destroy(far);
-  memory->destroy(family_volume);
-  memory->destroy(weighted_volume);
   memory->destroy(built_tag);
-  memory->destroy(dissipated_atom);
+  for (Field &f : fields) memory->destroy(f.data);
 }
 
 int FixPDBonds::setmask()
@@ -401,8 +404,9 @@ void FixPDBonds::check_stored_partners()
   MPI_Allreduce(&damaged, &total_damaged, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   MPI_Allreduce(&claimed, &bad_count, 1, MPI_LMP_BIGINT, MPI_MAX, world);
   if (total_damaged)
-    error->all(FLERR, "Fix pd/bonds: {} atoms arrived with a bond count outside 0 to {} (e.g. {}): "
-               "the restart file is damaged", total_damaged, maxpartner, bad_count);
+    error->all(FLERR, "Fix pd/bonds: {} atoms arrived with a bond count outside 0 to {} (e.g. {}) or "
+               "a record longer or shorter than its count and the listed per-atom fields make: the "
+               "restart file is damaged", total_damaged, maxpartner, bad_count);
   bigint bad = 0;
   tagint example = 0;
   for (int i = 0; i < atom->nlocal; i++)
@@ -438,13 +442,14 @@ void FixPDBonds::remove_bond(int i, int k)
 void FixPDBonds::reference_sums()
 {
   const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) family_volume[i] = weighted_volume[i] = 0.0;
+  double *family = family_volume(), *weighted = weighted_volume();
+  for (int i = 0; i < nall; i++) family[i] = weighted[i] = 0.0;
   pd_bond_view v = view();
-  pd_weighted_volume(&v, atom->vfrac, weighted_volume);
+  pd_weighted_volume(&v, atom->vfrac, weighted);
   v.weight = nullptr;
-  pd_weighted_volume(&v, atom->vfrac, family_volume);
-  sum_to_owners(weighted_volume);
-  sum_to_owners(family_volume);
+  pd_weighted_volume(&v, atom->vfrac, family);
+  sum_to_owners(iweighted_volume);
+  sum_to_owners(ifamily_volume);
 }
 
 pd_bond_view FixPDBonds::view() const
@@ -475,31 +480,13 @@ double FixPDBonds::bytes_per_bond() const
 double FixPDBonds::memory_usage()
 {
   const double per_bond = bytes_per_bond();
-  return (double) atom->nmax * (maxpartner * per_bond + sizeof(int) + sizeof(tagint) + 2 * sizeof(double));
+  int per_atom_fields = 0;
+  for (const Field &f : fields) per_atom_fields += f.decl.width;
+  return (double) atom->nmax * (maxpartner * per_bond + sizeof(int) + sizeof(tagint) +
+                                per_atom_fields * sizeof(double));
 }
 
 /* ---------------------------------------------------------------------- */
-
-void FixPDBonds::sum_to_owners(double *a, int width)
-{
-  comm_array = a;
-  comm_width = width;
-  PDCompat::reverse_comm(comm, this, width);
-}
-
-void FixPDBonds::max_to_owners(double *a)
-{
-  comm_max = 1;
-  sum_to_owners(a, 1);
-  comm_max = 0;
-}
-
-void FixPDBonds::copy_to_ghosts(double *a, int width)
-{
-  comm_array = a;
-  comm_width = width;
-  PDCompat::forward_comm(comm, this, width);
-}
 
 int FixPDBonds::pack_forward_comm(int n, int *list, double *buf, int, int *)
 {
@@ -544,10 +531,8 @@ void FixPDBonds::grow_arrays(int nmax)
   memory->grow(far, nmax, maxpartner, "pd/bonds:far");
   if (use_weights) memory->grow(weight, nmax, maxpartner, "pd/bonds:weight");
   if (nhistory) memory->grow(history, nmax, maxpartner * nhistory, "pd/bonds:history");
-  memory->grow(family_volume, nmax, "pd/bonds:family_volume");
-  memory->grow(weighted_volume, nmax, "pd/bonds:weighted_volume");
   memory->grow(built_tag, nmax, "pd/bonds:built_tag");
-  memory->grow(dissipated_atom, nmax, "pd/bonds:dissipated_atom");
+  grow_fields(nmax);
 }
 
 void FixPDBonds::copy_arrays(int i, int j, int)
@@ -559,10 +544,9 @@ void FixPDBonds::copy_arrays(int i, int j, int)
     if (use_weights) weight[j][k] = weight[i][k];
   }
   for (int h = 0; h < npartner[i] * nhistory; h++) history[j][h] = history[i][h];
-  family_volume[j] = family_volume[i];
-  weighted_volume[j] = weighted_volume[i];
   built_tag[j] = built_tag[i];
-  dissipated_atom[j] = dissipated_atom[i];
+  for (Field &f : fields)
+    for (int w = 0; w < f.decl.width; w++) f.data[j * f.decl.width + w] = f.data[i * f.decl.width + w];
 }
 
 // Atoms created after the families were built join without bonds.
@@ -570,25 +554,36 @@ void FixPDBonds::set_arrays(int i)
 {
   npartner[i] = 0;
   built_tag[i] = 0;
-  family_volume[i] = weighted_volume[i] = dissipated_atom[i] = 0.0;
+  for (Field &f : fields)
+    for (int w = 0; w < f.decl.width; w++) f.data[i * f.decl.width + w] = 0.0;
 }
 
-int FixPDBonds::per_atom_doubles(int i) const
+// doubles of one atom's exchange (flag MIGRATE) or restart (RESTART) record
+int FixPDBonds::per_atom_doubles(int i, int flag) const
 {
-  return PER_ATOM_FIXED + npartner[i] * (2 + use_weights + nhistory);
+  return PER_ATOM_FIXED + field_doubles(flag) + npartner[i] * (2 + use_weights + nhistory);
 }
 
-// Layout shared by exchange and restart: count, own tag at build, family
-// volume, weighted volume, dissipated energy, then per bond: tag, r0 (its
-// sign: broken) [, weight] [, history].
+// Layout shared by exchange and restart: count, own tag at build, the
+// fields flagged MIGRATE (exchange) or RESTART (restart, in the order the
+// global record lists them), then per bond: tag, r0 (its sign: broken)
+// [, weight] [, history].
 int FixPDBonds::pack_exchange(int i, double *buf)
+{
+  return pack_atom(i, buf, PDField::MIGRATE);
+}
+
+int FixPDBonds::unpack_exchange(int i, double *buf)
+{
+  return unpack_atom(i, buf, PDField::MIGRATE);
+}
+
+int FixPDBonds::pack_atom(int i, double *buf, int flag) const
 {
   int m = 0;
   buf[m++] = ubuf(npartner[i]).d;
   buf[m++] = ubuf(built_tag[i]).d;
-  buf[m++] = family_volume[i];
-  buf[m++] = weighted_volume[i];
-  buf[m++] = dissipated_atom[i];
+  m += pack_fields(i, buf + m, flag);
   for (int k = 0; k < npartner[i]; k++) {
     buf[m++] = ubuf(partner[i][k]).d;
     buf[m++] = r0[i][k];
@@ -598,7 +593,7 @@ int FixPDBonds::pack_exchange(int i, double *buf)
   return m;
 }
 
-int FixPDBonds::unpack_exchange(int i, double *buf)
+int FixPDBonds::unpack_atom(int i, const double *buf, int flag)
 {
   int m = 0;
   const bigint count = ubuf(buf[m++]).i;
@@ -611,9 +606,7 @@ int FixPDBonds::unpack_exchange(int i, double *buf)
   }
   npartner[i] = (int) count;
   built_tag[i] = (tagint) ubuf(buf[m++]).i;
-  family_volume[i] = buf[m++];
-  weighted_volume[i] = buf[m++];
-  dissipated_atom[i] = buf[m++];
+  m += unpack_fields(i, buf + m, flag);
   for (int k = 0; k < npartner[i]; k++) {
     partner[i][k] = (tagint) ubuf(buf[m++]).i;
     r0[i][k] = buf[m++];
@@ -682,6 +675,8 @@ void FixPDBonds::write_restart(FILE *fp)
     for (const double *v : {c->crack.a, c->crack.b, c->crack.c}) list.insert(list.end(), v, v + 3);
     list.push_back(c->groupbit);
   }
+  // the per-atom fields of the per-atom records, by name (last: fix_pd_bonds_fields.cpp)
+  append_field_list(list);
   list[R_SIZE] = (double) list.size();
   int size = list.size() * sizeof(double);
   fwrite(&size, sizeof(int), 1, fp);
@@ -697,7 +692,7 @@ void FixPDBonds::restart(char *buf)
   const double nfresh = list[R_NFRESH], ncuts = list[R_NCUTS];
   const bool sane = (list[R_BUILT] == 0.0 || list[R_BUILT] == 1.0) && list[R_MAXPARTNER] >= 1.0 &&
       list[R_MAXPARTNER] <= 1e6 && nfresh >= 0.0 && nfresh <= 1e9 && ncuts >= 0.0 && ncuts <= 1e6 &&
-      list[R_SIZE] == R_FIXED + 3.0 * nfresh + CUT_DOUBLES * ncuts && list[R_LOST] >= 0.0 &&
+      list[R_SIZE] >= R_FIXED + 3.0 * nfresh + CUT_DOUBLES * ncuts && list[R_LOST] >= 0.0 &&
       list[R_BROKEN] >= 0.0 && std::isfinite(list[R_DISSIPATED]) && std::isfinite(list[R_JOULE]);
   if (!sane)
     error->all(FLERR, "Fix pd/bonds: the restart file's bond record is damaged (inconsistent "
@@ -736,6 +731,8 @@ void FixPDBonds::restart(char *buf)
     }
     pending_cuts.push_back(cut);
   }
+  // the per-atom fields (last: fix_pd_bonds_fields.cpp)
+  read_field_list(p, list + (size_t) list[R_SIZE]);
 }
 
 // New row length of the per-atom bond tables (their contents are dropped:
@@ -743,7 +740,7 @@ void FixPDBonds::restart(char *buf)
 void FixPDBonds::resize_tables(int rowlength)
 {
   maxpartner = rowlength;
-  maxexchange = per_atom_max();
+  maxexchange = per_atom_max(PDField::MIGRATE);
   memory->destroy(partner);
   memory->destroy(r0);
   memory->destroy(weight);
@@ -754,31 +751,40 @@ void FixPDBonds::resize_tables(int rowlength)
 
 int FixPDBonds::pack_restart(int i, double *buf)
 {
-  buf[0] = per_atom_doubles(i) + 1;
-  return pack_exchange(i, buf + 1) + 1;
+  buf[0] = per_atom_doubles(i, PDField::RESTART) + 1;
+  return pack_atom(i, buf + 1, PDField::RESTART) + 1;
 }
 
+// A record whose length is not what its bond count and the global record's
+// field list make is damaged (said collectively at the first mapping).
 void FixPDBonds::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  unpack_exchange(nlocal, &extra[nlocal][m + 1]);
+  const double *record = &extra[nlocal][m];
+  const bigint before = damaged;
+  const int used = unpack_atom(nlocal, record + 1, PDField::RESTART);
+  if (damaged == before && used + 1 != (int) record[0]) {
+    if (!damaged) damaged_example = npartner[nlocal];
+    damaged++;
+    npartner[nlocal] = 0;
+  }
 }
 
 int FixPDBonds::size_restart(int i)
 {
-  return per_atom_doubles(i) + 1;
+  return per_atom_doubles(i, PDField::RESTART) + 1;
 }
 
-int FixPDBonds::per_atom_max() const
+int FixPDBonds::per_atom_max(int flag) const
 {
-  return PER_ATOM_FIXED + maxpartner * (2 + use_weights + nhistory);
+  return PER_ATOM_FIXED + field_doubles(flag) + maxpartner * (2 + use_weights + nhistory);
 }
 
 int FixPDBonds::maxsize_restart()
 {
-  return per_atom_max() + 1;
+  return per_atom_max(PDField::RESTART) + 1;
 }
 
 // A second evaluation of the step in which the listed bonds broke replays

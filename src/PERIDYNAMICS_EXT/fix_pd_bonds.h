@@ -12,6 +12,7 @@ FixStyle(pd/bonds,FixPDBonds);
 #define LMP_FIX_PD_BONDS_H
 
 #include "fix.h"
+#include "pd_field.h"
 
 #include <string>
 #include <vector>
@@ -87,8 +88,6 @@ class FixPDBonds : public Fix {
   bigint local_lost() const { return nlost_local; }
   bool has_broken() const { return any_broken; }
   void set_has_broken() { any_broken = 1; }
-  // per-atom dissipated energy density (owned atoms; migrates, restarts)
-  double *dissipated_atom;
   // The bonds that broke at the last force evaluation, so that a second
   // evaluation of that step (the setup of a next run, or after a restart)
   // applies the same forces: unbreak_fresh() makes them intact again for it
@@ -107,15 +106,34 @@ class FixPDBonds : public Fix {
   // that file are cut by it.
   void remember_cut(const std::string &fixid, const pd_crack &crack, int groupbit);
 
-  // Sum a per-atom array's ghost entries onto their owners, or copy the
-  // owners' entries to their ghosts; 'width' doubles per atom, at most 2.
-  void sum_to_owners(double *a, int width = 1);
-  void max_to_owners(double *a);
-  void copy_to_ghosts(double *a, int width = 1);
+  // Declared per-atom fields (pd_field.h). add_field() returns the field's
+  // id; declaring a name again returns the same id (width and flags must
+  // agree). Declare at init (a pair style's init_style), before the run's
+  // set-up sizes the communication buffers. field(id) is the storage, owned
+  // + ghost atoms, atom i at [i * width]; it moves when atoms are added, so
+  // take it again after reneighboring rather than keeping it.
+  int add_field(const PDField &decl);
+  int find_field(const std::string &name) const;    // -1: none of that name
+  int nfields() const { return (int) fields.size(); }
+  const PDField &field_info(int id) const { return fields[id].decl; }
+  double *field(int id) const { return fields[id].data; }
+  void forward(int id);          // owners' values to their ghosts
+  void sum_to_owners(int id);    // ghosts' values added onto their owners
+  void max_to_owners(int id);    // owners take the max of theirs and their ghosts'
+  // the store's own fields, declared whether or not a store exists yet
+  static std::vector<PDField> own_fields();
+  // per-atom energy dissipated in the bonds (plastic work, fracture), as an
+  // energy density; and the reference family data fixed when the families
+  // are built: sum of the partners' volumes, sum of weight x partner volume
+  double *dissipated_atom() const { return field(idissipated); }
+  double *family_volume() const { return field(ifamily_volume); }
+  double *weighted_volume() const { return field(iweighted_volume); }
 
-  // per-atom reference family data, fixed when the families are built
-  double *family_volume;      // sum of the partners' volumes
-  double *weighted_volume;    // sum of weight x partner volume
+  // The same for a per-atom array that is not a field ('width' doubles per
+  // atom, up to the widest declared field and at least 2).
+  void sum_to_owners(double *a, int width = 1);
+  void max_to_owners(double *a, int width = 1);
+  void copy_to_ghosts(double *a, int width = 1);
 
  private:
   PairPD *owner;
@@ -155,6 +173,26 @@ class FixPDBonds : public Fix {
   int comm_width;
   int comm_max;            // reverse comm takes the max instead of the sum
 
+  // the declared per-atom fields (fix_pd_bonds_fields.cpp)
+  struct Field {
+    PDField decl;
+    double *data;          // nmax x width
+    bool provisional;      // known only from a restart file so far: flags taken from the file
+  };
+  std::vector<Field> fields;
+  int idissipated, ifamily_volume, iweighted_volume;
+  std::vector<int> restart_read;    // the fields of the per-atom restart records being read, in the file's order
+  bool fields_from_file;            // the store was read from a restart file
+  int field_doubles(int flag) const;    // per atom, over the fields with that flag
+  void grow_fields(int nmax);
+  int pack_fields(int i, double *buf, int flag) const;
+  int pack_atom(int i, double *buf, int flag) const;
+  int unpack_atom(int i, const double *buf, int flag);
+  int unpack_fields(int i, const double *buf, int flag);
+  void append_field_list(std::vector<double> &list) const;
+  void read_field_list(const double *p, const double *end);
+  void communicate(double *a, int width, int how);
+
   void build_families();
   void sign_fresh(double sign);
   double current_length(int i, int k) const;
@@ -172,8 +210,8 @@ class FixPDBonds : public Fix {
   void reference_sums();
   void remove_bond(int i, int k);
   void resize_tables(int rowlength);
-  int per_atom_doubles(int i) const;
-  int per_atom_max() const;
+  int per_atom_doubles(int i, int flag) const;
+  int per_atom_max(int flag) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -491,6 +491,7 @@ void PairPD::init_style()
   bonds = dynamic_cast<FixPDBonds *>(PDCompat::fix_by_id(modify, FIX_ID));
   if (!bonds) error->all(FLERR, "Fix ID {} is taken by a fix that is not pd/bonds", FIX_ID);
   bonds->set_owner(this);
+  declare_fields();
   bonds->set_family_key(family_key());
   if (bonds->is_built() && bonds->built_for() != family_key())
     error->all(FLERR, "Pair {}: the bond families were built for other pair settings (style, "
@@ -654,7 +655,8 @@ double *PairPD::zero_released()
 void PairPD::book_released()
 {
   bonds->sum_to_owners(released);
-  for (int i = 0; i < atom->nlocal; i++) bonds->dissipated_atom[i] += released[i];
+  double *dissipated = bonds->dissipated_atom();
+  for (int i = 0; i < atom->nlocal; i++) dissipated[i] += released[i];
 }
 
 // Book what one evaluation broke: totals on this rank, and the per-atom
@@ -689,6 +691,14 @@ double PairPD::bond_weight(int itype, int jtype, double r) const
 }
 
 /* ---------------------------------------------------------------------- */
+
+// The style's per-atom fields, in the bond store (the same ones again at
+// each run: the store returns their ids).
+void PairPD::declare_fields()
+{
+  field_id.clear();
+  for (const PDField &f : per_atom_fields()) field_id.push_back(bonds->add_field(f));
+}
 
 void PairPD::grow_work()
 {

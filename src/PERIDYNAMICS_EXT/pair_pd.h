@@ -8,6 +8,7 @@
 #define LMP_PAIR_PD_H
 
 #include "pair.h"
+#include "pd_field.h"
 
 #include <string>
 #include <vector>
@@ -58,6 +59,9 @@ class PairPD : public Pair {
   // micromodulus of a bond-based solid as stiff as this material: the scale
   // of the contact stiffness (pd/contact)
   virtual double contact_micromodulus(int itype, int jtype) const = 0;
+  // the per-atom fields the style keeps in the bond store (pd_field.h),
+  // declared with it at init; compute pd/atom lists the OUTPUT ones
+  virtual std::vector<PDField> per_atom_fields() const { return {}; }
 
  protected:
   std::vector<std::string> names;
@@ -74,6 +78,7 @@ class PairPD : public Pair {
   int report_pending;       // print the setup report at the next compute
   double *work;             // per-atom scratch, 2 doubles per atom
   int nwork;
+  std::vector<int> field_id;    // the bond store's ids of per_atom_fields(), in their order
 
   // style hooks
   virtual int parse_setting(int narg, char **arg, int iarg);    // returns args used, 0 if unknown
@@ -102,6 +107,7 @@ class PairPD : public Pair {
   bool given(int p, int i, int j) const;
   int coef_index(const std::string &name) const;
   void grow_work();
+  void declare_fields();
   void tally(const pd_tally &t);
   void report_setup();
   double family_key() const;

@@ -36,21 +36,17 @@ enum { HORIZON, BULK, SHEAR, YOUNG, POISSON, ORDER };
 PairPDOrdinary::PairPDOrdinary(LAMMPS *lmp) :
     PairPD(lmp, {"horizon", "K", "G", "E", "nu", "m"}), influence(-1),
     per_atom_norm(0), order(0.5), bulk_volume(nullptr), lambda_bar(nullptr), mu_bar(nullptr),
-    theta(nullptr), abstate(nullptr), nmax(0), strain(nullptr), nstrain(0), beta(nullptr),
-    crit(nullptr), gc_pair(nullptr)
+    strain(nullptr), nstrain(0), beta(nullptr), gc_pair(nullptr)
 {
 }
 
 PairPDOrdinary::~PairPDOrdinary()
 {
-  memory->destroy(theta);
-  memory->destroy(abstate);
   memory->destroy(bulk_volume);
   memory->destroy(lambda_bar);
   memory->destroy(mu_bar);
   memory->destroy(strain);
   memory->destroy(beta);
-  memory->destroy(crit);
   memory->destroy(gc_pair);
 }
 
@@ -173,7 +169,7 @@ double PairPDOrdinary::bond_weight(int itype, int jtype, double r) const
 // renormalization at free surfaces; surface atoms are softer).
 double PairPDOrdinary::norm(int i) const
 {
-  const double m = per_atom_norm ? bonds->weighted_volume[i] : bulk_volume[atom->type[i]];
+  const double m = per_atom_norm ? bonds->weighted_volume()[i] : bulk_volume[atom->type[i]];
   return m > 0.0 ? dim() / m : 0.0;
 }
 
@@ -190,7 +186,7 @@ void PairPDOrdinary::setup_run()
   memory->create(mu_bar, ntypes + 1, "pair:mu_bar");
   std::vector<double> mine(ntypes + 1, 0.0);
   for (int i = 0; i < atom->nlocal; i++)
-    mine[atom->type[i]] = MAX(mine[atom->type[i]], bonds->weighted_volume[i]);
+    mine[atom->type[i]] = MAX(mine[atom->type[i]], bonds->weighted_volume()[i]);
   MPI_Allreduce(mine.data(), bulk_volume, ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
   memory->destroy(beta);
   memory->create(beta, ntypes + 1, "pair:beta");
@@ -237,24 +233,26 @@ void PairPDOrdinary::setup_run()
   }
 }
 
-void PairPDOrdinary::grow_state()
+// Per-atom state in the bond store: the dilatation of owned atoms (compute
+// pd/atom lists it), A = lambda theta N and B = 2 mu N (owned + ghost), and
+// with the energy law beta N for G_c = 1 (owned + ghost).
+std::vector<PDField> PairPDOrdinary::per_atom_fields() const
 {
-  if (atom->nmax > nmax) {
-    nmax = atom->nmax;
-    memory->destroy(theta);
-    memory->destroy(abstate);
-    memory->destroy(crit);
-    memory->create(theta, nmax, "pair:theta");
-    memory->create(abstate, 2 * nmax, "pair:abstate");
-    memory->create(crit, nmax, "pair:crit");
-  }
+  std::vector<PDField> f = {{"dilatation", 1, PDField::OUTPUT}, {"ordinary_ab", 2, PDField::FORWARD}};
+  if (law == PD_FAIL_ENERGY) f.push_back({"energy_failure_crit", 1, PDField::FORWARD});
+  return f;
+}
+
+double *PairPDOrdinary::state(int f) const
+{
+  return f < (int) field_id.size() ? bonds->field(field_id[f]) : nullptr;
 }
 
 void PairPDOrdinary::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  grow_state();
   grow_work();
+  double *theta = state(F_DILATATION), *abstate = state(F_AB), *crit = state(F_CRIT);
   if (report_pending) report_setup();
 
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
@@ -288,13 +286,13 @@ void PairPDOrdinary::compute(int eflag, int vflag)
       if (t.eatom) t.eatom[i] += o.energy;
     }
   }
-  bonds->copy_to_ghosts(abstate, 2);
+  bonds->forward(field_id[F_AB]);
   if (law == PD_FAIL_ENERGY) {
     // beta N is fixed per atom: ghosts need it again only after reneighboring
     for (int i = 0; i < nlocal; i++) crit[i] = beta[type[i]] * norm(i);
     energy_law = {crit, gc_pair};
     fail.params = &energy_law;
-    if (neighbor->ago == 0) bonds->copy_to_ghosts(crit);
+    if (neighbor->ago == 0) bonds->forward(field_id[F_CRIT]);
   }
   pd_ordinary_forces(&L, &st);
   if (fails) account_failure(fail);
@@ -303,9 +301,8 @@ void PairPDOrdinary::compute(int eflag, int vflag)
 
 void PairPDOrdinary::stable_dt_sum(double *sum)
 {
-  grow_state();
   const int nlocal = atom->nlocal;
-  double *k = abstate;    // scratch: stiffness coefficient per atom
+  double *k = state(F_AB);    // scratch: stiffness coefficient per atom
   for (int i = 0; i < nlocal; i++) {
     const int ti = atom->type[i];
     k[i] = norm(i) * (2.0 * mu_bar[ti] + dim() * fabs(lambda_bar[ti]));
@@ -356,7 +353,7 @@ void PairPDOrdinary::read_restart_settings(FILE *fp)
 void *PairPDOrdinary::extract(const char *name, int &dim)
 {
   dim = 0;
-  if (strcmp(name, "theta") == 0) return (void *) theta;
+  if (strcmp(name, "theta") == 0) return bonds ? (void *) state(F_DILATATION) : nullptr;
   return nullptr;
 }
 

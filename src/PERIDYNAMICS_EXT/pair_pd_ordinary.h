@@ -33,6 +33,7 @@ class PairPDOrdinary : public PairPD {
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
   double contact_micromodulus(int, int) const override;
+  std::vector<PDField> per_atom_fields() const override;
 
  protected:
   int influence;       // pd_influence_kind
@@ -40,13 +41,12 @@ class PairPDOrdinary : public PairPD {
   double order;        // Seth-Hill order m, the same for all types
   double *bulk_volume; // per type: weighted volume of a complete family
   double *lambda_bar, *mu_bar;    // per type: peridynamic Lame constants
-  double *theta;       // dilatation of owned atoms
-  double *abstate;     // per atom A = lambda theta N, B = 2 mu N (owned + ghost)
-  int nmax;
+  // per-atom fields in the bond store (per_atom_fields(), field_id)
+  enum { F_DILATATION, F_AB, F_CRIT };
+  double *state(int f) const;
   double *strain;      // per-bond strain, reused by the force pass (m != 1/2)
   bigint nstrain;
   double *beta;        // per type: energy-failure beta (T14 eq. 6.3) for G_c = 1
-  double *crit;        // per atom beta N for G_c = 1 (energy law; owned + ghost)
   double *gc_pair;     // per type pair G_c of the energy law (+inf: no failure)
   struct pd_law_energy energy_law;    // its parameters for one evaluation
 
@@ -59,7 +59,6 @@ class PairPDOrdinary : public PairPD {
   void report_extra() override;
   void setup_run() override;
   std::string family_settings() const override;
-  void grow_state();
   double norm(int i) const;
 };
 

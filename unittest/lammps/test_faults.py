@@ -57,7 +57,8 @@ raw = bytearray(open(f"{d}/good.restart", "rb").read())
 # header is atom 1's. Overwrite its first partner tag with a huge ID.
 one = struct.pack("<q", 1)
 def family_volume_at(i):
-    return struct.unpack("<d", raw[i + 16:i + 24])[0]
+    # after count and tag, the fields: dissipated, family_volume, weighted_volume
+    return struct.unpack("<d", raw[i + 24:i + 32])[0]
 
 
 # (any byte offset: newer LAMMPS versions do not align the per-atom records)
@@ -66,13 +67,17 @@ count_tag = [i for i in range(0, len(raw) - 48) if raw[i + 8:i + 16] == one and
 check("atom 1's bond record is found in the restart file (once)", len(count_tag) == 1, f"{len(count_tag)}")
 at = count_tag[-1]
 bad = bytearray(raw)
-bad[at + 40:at + 48] = struct.pack("<q", 10 ** 9)   # after count, tag, 2 volumes, dissipated
+bad[at + 40:at + 48] = struct.pack("<q", 10 ** 9)   # after count, tag and the three fields
 open(f"{d}/bad_tag.restart", "wb").write(bad)
 bad = bytearray(raw)
 bad[at:at + 8] = struct.pack("<q", 10 ** 7)           # more bonds than the tables hold
 open(f"{d}/bad_count.restart", "wb").write(bad)
+bad = bytearray(raw)
+bad[at:at + 8] = struct.pack("<q", struct.unpack("<q", raw[at:at + 8])[0] - 1)   # one bond short of its record
+open(f"{d}/bad_length.restart", "wb").write(bad)
 for name, message in (("bad_tag", "stored bonds name no existing atom"),
-                       ("bad_count", "arrived with a bond count outside 0 to")):
+                       ("bad_count", "arrived with a bond count outside 0 to"),
+                       ("bad_length", "or a record longer or shorter than its count")):
     for ranks in (1, 2):
         out, _ = run(f"read_restart {name}.restart\nrun 0\n", d, ranks=ranks, expect_error=True)
         crashed = any(s in out for s in ("Segmentation", "signal 11", "core dumped"))

@@ -30,7 +30,7 @@ for style in ["pd/bond legacy", "pd/ordinary", "pd/ordinary 2D m=0"]:
     check(f"{style}: restarted run ends at bitwise the same positions", diff == 0.0, f"max rel diff {diff:.3g}")
 # A restart file whose bond record has another format tag (as one written
 # by an older or newer build) is refused by name, not misread.
-magic = struct.pack("<d", 20261201.1)
+magic = struct.pack("<d", 20261201.2)
 raw = open(f"{d}/restart.{tag}", "rb").read()
 check("the bond record carries its format tag once", raw.count(magic) == 1)
 open(f"{d}/restart.old", "wb").write(replace_exact(raw, magic, struct.pack("<d", 20250101.0)))
