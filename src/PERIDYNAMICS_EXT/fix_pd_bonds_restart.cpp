@@ -71,7 +71,7 @@ void FixPDBonds::write_restart(FILE *fp)
       for (int d = 0; d < 3; d++) lists.put(v[d]);
     lists.put((int64_t) c->groupbit);
   }
-  // (the per-atom field declarations go here)
+  // >>> the per-atom field declarations (names, widths) go here, after the cuts
 
   r.total_bytes = sizeof r + lists.bytes.size();
   const int size = (int) r.total_bytes;
@@ -136,7 +136,7 @@ void FixPDBonds::restart(char *buf)
       cut.groupbit = (int) groupbit;
       cuts.push_back(cut);
     }
-    // (the per-atom field declarations are read here)
+    // >>> the per-atom field declarations (names, widths) are read here
     complete = complete && in.at_end();
   }
   if (!complete)

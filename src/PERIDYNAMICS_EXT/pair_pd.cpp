@@ -548,7 +548,7 @@ PDFamilySpec PairPD::family_spec() const
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = 1; j <= atom->ntypes; j++) spec.horizons[(size_t) i * (atom->ntypes + 1) + j] = horizon(i, j);
   spec.smallest = smallest_horizon();
-  if (uses_weights()) spec.weight = weight_rule();
+  spec.weight = weight_rule();    // used only when the bonds carry weights
   return spec;
 }
 

@@ -11,10 +11,14 @@
    format it found and the one it expects.
 
    Changing the record: add the field (8 bytes: int64_t or double) at the
-   end of its group, bump PD_BONDS_RECORD_VERSION, fill it in FixPDBonds::write_restart and
-   read it in FixPDBonds::restart. The per-atom restart layout
-   (FixPDBonds::pack_exchange) is covered by the same version: bump it when
-   that changes too.
+   end of its group, bump PD_BONDS_RECORD_VERSION, fill the field in
+   FixPDBonds::write_restart and read it in FixPDBonds::restart
+   (fix_pd_bonds_restart.cpp). A new list: its count at the end of the
+   counts, its entries after the last list (PDRecordWriter/Reader below).
+   The header (tag, version, fixed_bytes, total_bytes) never moves: every
+   version is recognized by it. The per-atom restart layout
+   (FixPDBonds::pack_exchange) is covered by the same version: bump it
+   when that changes too.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PD_BONDS_RECORD_H
@@ -35,7 +39,6 @@ constexpr int64_t PD_BONDS_RECORD_VERSION = 1;
 constexpr char PD_BONDS_RECORD_TAG[8] = {'P', 'D', 'B', 'O', 'N', 'D', 'S', '\0'};
 
 struct PDBondsRecord {
-
   // -- header: checked before anything else is read --
   char tag[8];
   int64_t version;            // PD_BONDS_RECORD_VERSION of the writer
@@ -62,7 +65,9 @@ struct PDBondsRecord {
   // -- counts of the lists that follow the struct, in this order --
   int64_t nfresh;             // fresh bonds: owner tag, partner tag (int64), length (double)
   int64_t ncuts;              // pending cuts: patch (int64), a, b, c (9 doubles), groupbit (int64)
-  // (new lists: their count here, their entries after the cuts)
+  // >>> new lists: their count here, their entries after the cuts; next:
+  // >>> the per-atom field declarations (name, width) of the field store
+  // >>> (PDRecordWriter::put_string for the names)
 };
 
 static_assert(std::is_trivially_copyable<PDBondsRecord>::value, "the record is written as bytes");

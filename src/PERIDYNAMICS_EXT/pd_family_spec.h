@@ -37,7 +37,7 @@ struct PDFamilySpec {
   std::vector<double> horizons;   // (ntypes+1)^2: NaN for a type of another hybrid
                                   // sub-style, 0 for 'nobond'
   double smallest = INFINITY;     // the smallest horizon of a type of this style
-  Weight weight;                  // empty when bonds carry no weight
+  Weight weight;                  // used only when the bonds carry weights
 
   double horizon(int i, int j) const { return horizons[(size_t) i * (ntypes + 1) + j]; }
   double bond_weight(int i, int j, double r) const { return weight(r, horizon(i, j)); }
