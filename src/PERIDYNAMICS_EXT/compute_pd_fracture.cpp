@@ -43,8 +43,9 @@ void ComputePDFracture::init()
 void ComputePDFracture::compute_vector()
 {
   invoked_vector = update->ntimestep;
-  double mine[4] = {bonds->local_dissipated(), bonds->local_dissipated_joule(),
-                    (double) bonds->local_broken(), (double) bonds->local_lost()};
+  const PDFractureRecord &record = bonds->fracture();
+  double mine[4] = {record.local_dissipated(), record.local_dissipated_joule(),
+                    (double) record.local_broken(), (double) bonds->local_lost()};
   MPI_Allreduce(mine, vector, 4, MPI_DOUBLE, MPI_SUM, world);
 }
 

@@ -17,7 +17,6 @@
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
-#include "pair_pd.h"
 #include "pd_compat.h"
 #include "pd_error.h"
 #include "update.h"
@@ -28,9 +27,9 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-// Tag of the global restart record: bump it whenever the layout of the
-// record or of the per-atom restart data changes.
-static constexpr double RESTART_FORMAT = 20261201.2;
+// The global restart record and its version: pd_bonds_record.h, written
+// and read in fix_pd_bonds_restart.cpp. The version covers the per-atom
+// layout (pack_exchange) too.
 static constexpr int PER_ATOM_FIXED = 2;    // count, own tag (then the fields, then the bonds)
 static constexpr double MAX_INTACT_LENGTH = 11.0;    // stretch 10: no material survives it
 
@@ -44,13 +43,12 @@ static inline bool owns_bond(tagint me, tagint other)
 }
 
 FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), owner(nullptr), built_tag(nullptr),
-    use_weights(0), nhistory(0), built(0), maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr),
-    r0(nullptr), weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), nlost_reported(0), dissipated(0.0), dissipated_joule(0.0), nbroken_local(0), any_broken(0),
-    family_key(0.0), fresh_step(-1), list(nullptr), guard_step(INFINITY), damaged(0), damaged_example(0),
-    intact_at_map(-1), breaks_since_map(0), stored_total(0),
-    comm_array(nullptr), comm_width(1), comm_max(0), idissipated(-1), ifamily_volume(-1),
-    iweighted_volume(-1), fields_from_file(false)
+    Fix(lmp, narg, arg), serving(false), built_tag(nullptr), use_weights(0), nhistory(0), built(0),
+    maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr), r0(nullptr), weight(nullptr),
+    history(nullptr), far(nullptr), nlost_local(0), intact_at_map(-1), stored_total(0),
+    nlost_reported(0), family_key(0.0), record(lmp), stable_dt(0.0), list(nullptr), comm_array(nullptr),
+    comm_width(1), comm_max(0), guard_step(INFINITY), damaged(0), damaged_example(0), idissipated(-1),
+    ifamily_volume(-1), iweighted_volume(-1), fields_from_file(false)
 {
   if (strcmp(id, "PD_BONDS") != 0)
     error->all(FLERR, "Fix pd/bonds is created by the pd/ pair styles (as PD_BONDS); do not define it by hand");
@@ -121,15 +119,33 @@ void FixPDBonds::post_run()
 // as they are: not mapped, not used, nothing dropped, until it returns.
 void FixPDBonds::init()
 {
-  PairPD *pair = PairPD::active(force);
-  owner = pair && pair->bond_store() == this ? pair : nullptr;
-  if (!owner) {
+  take_family_spec();
+  if (!serving) {
     if (built && comm->me == 0)
       utils::logmesg(lmp, "pd/bonds: no pd/ material pair style in this run; the bond families "
                      "are kept unchanged until one returns\n");
     return;
   }
   if (!built) PDCompat::request_occasional_full(neighbor, this, instance_me);
+}
+
+// The family spec of the pair style that provides one now, alone or as a
+// hybrid sub-style (pair styles initialize before fixes, so it is this
+// run's), copied: the store keeps no pointer to a pair style, which the
+// next 'pair_style' command may delete. Families are built once: later
+// runs must ask for the same ones.
+void FixPDBonds::take_family_spec()
+{
+  const PDFamilySource *source = pd_family_source(force);
+  serving = source != nullptr;
+  spec = serving ? source->family_spec() : PDFamilySpec();
+  stable_dt = 0.0;
+  if (!serving) return;
+  if (!built) family_key = spec.key;
+  else if (family_key != spec.key)
+    error->all(FLERR, "Pair {}: the bond families were built for other pair settings (style, "
+               "horizons, influence, legacy or dimension changed after the first run); they are "
+               "built once: start the simulation again with the new settings", spec.style);
 }
 
 void FixPDBonds::init_list(int, NeighList *ptr)
@@ -139,7 +155,7 @@ void FixPDBonds::init_list(int, NeighList *ptr)
 
 void FixPDBonds::setup_post_neighbor()
 {
-  if (!owner) nowned = 0;
+  if (!serving) nowned = 0;
   else if (!built) build_families();
   else {
     map_partners(true);
@@ -181,7 +197,7 @@ void FixPDBonds::check_identities()
 
 void FixPDBonds::post_neighbor()
 {
-  if (owner) map_partners(false);
+  if (serving) map_partners(false);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -202,7 +218,7 @@ void FixPDBonds::build_families()
     double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
     PDCompat::minimum_image(domain, d);
     const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    return r <= owner->horizon(type[i], type[j]) ? r : -1.0;
+    return r <= spec.horizon(type[i], type[j]) ? r : -1.0;
   };
 
   int mymax = 0;
@@ -232,7 +248,7 @@ void FixPDBonds::build_families()
       if (a != b && !touching[a * nt + b]) {
         double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
         PDCompat::minimum_image(domain, d);
-        const double reach = MAX(owner->horizon(a, a), owner->horizon(b, b));
+        const double reach = MAX(spec.horizon(a, a), spec.horizon(b, b));
         touching[a * nt + b] = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= reach * reach;
       }
       const double r = reference_length(i, j);
@@ -240,14 +256,14 @@ void FixPDBonds::build_families()
       const int k = npartner[i]++;
       partner[i][k] = tag[j];
       r0[i][k] = r;
-      if (use_weights) weight[i][k] = owner->bond_weight(type[i], type[j], r);
+      if (use_weights) weight[i][k] = spec.bond_weight(type[i], type[j], r);
       for (int h = 0; h < nhistory; h++) history[i][k * nhistory + h] = 0.0;
     }
   }
   int coincident = 0, any_coincident;
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < npartner[i]; k++)
-      if (r0[i][k] <= 1e-12 * owner->horizon(type[i], type[i])) coincident = 1;
+      if (r0[i][k] <= 1e-12 * spec.horizon(type[i], type[i])) coincident = 1;
   MPI_Allreduce(&coincident, &any_coincident, 1, MPI_INT, MPI_MAX, world);
   if (any_coincident)
     error->all(FLERR, "Fix pd/bonds: two atoms share a reference position (x0); peridynamic "
@@ -307,19 +323,19 @@ void FixPDBonds::report_bonds_by_type(const std::vector<bigint> &touching_mine)
     const double per_atom = (double) ends / counts[t * nt];
     per_type += fmt::format(" type {} {:.2f};", t, per_atom);
     // (a type left to another sub-style of a hybrid has no horizon here)
-    if (per_atom < MIN_BONDS_PER_ATOM && !std::isnan(owner->horizon(t, t)))
+    if (per_atom < MIN_BONDS_PER_ATOM && !std::isnan(spec.horizon(t, t)))
       error->all(FLERR, "Fix pd/bonds: atoms of type {} have {:.2f} bonds on average (horizon {}): "
                  "they would move as free particles. The horizon must span several particle "
                  "spacings: check the lattice spacing, 'set volume' and the units", t, per_atom,
-                 owner->horizon(t, t));
+                 spec.horizon(t, t));
     for (int u = t + 1; u < nt; u++) {
       if (!counts[u * nt]) continue;
       between += fmt::format(" {}-{} {};", t, u, counts[t * nt + u]);
-      if (touching[t * nt + u] && !counts[t * nt + u] && owner->horizon(t, u) > 0.0 && comm->me == 0)
+      if (touching[t * nt + u] && !counts[t * nt + u] && spec.horizon(t, u) > 0.0 && comm->me == 0)
         error->warning(FLERR, "Fix pd/bonds: types {} and {} touch (atoms within each other's "
                        "horizon) but share no bonds (their horizon {} is below the spacing); to "
                        "keep them unbonded write 'pair_coeff {} {} nobond'", t, u,
-                       owner->horizon(t, u), t, u);
+                       spec.horizon(t, u), t, u);
     }
   }
   if (comm->me == 0)
@@ -386,12 +402,11 @@ void FixPDBonds::map_partners(bool setup)
 // depend on it). A broken bond that vanishes is not counted.
 bigint FixPDBonds::count_lost(bigint stored, bigint intact)
 {
-  bigint mine[3] = {intact, breaks_since_map, stored}, sums[3];
+  bigint mine[3] = {intact, record.take_breaks_since_map(), stored}, sums[3];
   MPI_Allreduce(mine, sums, 3, MPI_LMP_BIGINT, MPI_SUM, world);
   const bigint lost = intact_at_map < 0 ? 0 : intact_at_map - sums[1] - sums[0];
   intact_at_map = sums[0];
   stored_total = sums[2];
-  breaks_since_map = 0;
   if (comm->me == 0) nlost_local += lost;
   return lost;
 }
@@ -462,6 +477,18 @@ pd_bond_view FixPDBonds::view() const
   v.len0 = r0 ? r0[0] : nullptr;
   v.weight = use_weights && weight ? weight[0] : nullptr;
   return v;
+}
+
+PDBondTable FixPDBonds::table() const
+{
+  PDBondTable t;
+  t.nowned = nowned;
+  t.stride = maxpartner;
+  t.count = npartner;
+  t.partner = partner ? partner[0] : nullptr;
+  t.len0 = r0 ? r0[0] : nullptr;
+  t.far = far ? far[0] : nullptr;
+  return t;
 }
 
 double FixPDBonds::compute_scalar()
@@ -616,16 +643,6 @@ int FixPDBonds::unpack_atom(int i, const double *buf, int flag)
   return m;
 }
 
-// The global record: format tag, its length, then named fields (see the
-// order below), the bonds broken at the last evaluation with their lengths
-// (every rank has them all) and the cracks waiting for the families.
-namespace {
-enum { R_FORMAT, R_SIZE, R_BUILT, R_MAXPARTNER, R_WEIGHTS, R_LOST, R_HISTORY, R_DISSIPATED,
-       R_KEY, R_JOULE, R_BROKEN, R_ANYBROKEN, R_FRESH_STEP, R_NFRESH, R_NCUTS, R_INTACT, R_BREAKS,
-       R_FIXED };
-constexpr int CUT_DOUBLES = 11;    // patch, a, b, c, groupbit
-}
-
 // write_data calls this on rank 0 while it writes the header: the one hook
 // LAMMPS gives a fix there. A data file keeps positions, not the bonds, the
 // reference shape or the damage; say so on the screen, and in the file as a
@@ -638,101 +655,6 @@ void FixPDBonds::write_data_header(FILE *fp, int)
                  "shape; continue a cracked body from a restart file (write_restart)");
   fputs("# PERIDYNAMICS_EXT: no bond families, reference positions or damage in data files; "
         "continue a cracked body from a restart file\n", fp);
-}
-
-void FixPDBonds::write_restart(FILE *fp)
-{
-  double total_lost = compute_scalar(), sums[2], mine[2] = {dissipated, dissipated_joule};
-  MPI_Allreduce(mine, sums, 2, MPI_DOUBLE, MPI_SUM, world);
-  bigint total_broken = 0, breaks = 0;
-  MPI_Allreduce(&nbroken_local, &total_broken, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  MPI_Allreduce(&breaks_since_map, &breaks, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (comm->me != 0) return;
-  std::vector<const PendingCut *> cuts;
-  for (const PendingCut &c : pending_cuts)
-    if (!built && (c.fixid.empty() || PDCompat::fix_by_id(modify, c.fixid))) cuts.push_back(&c);
-  std::vector<double> list(R_FIXED);
-  list[R_FORMAT] = RESTART_FORMAT;
-  list[R_BUILT] = built;
-  list[R_MAXPARTNER] = maxpartner;
-  list[R_WEIGHTS] = use_weights;
-  list[R_LOST] = total_lost;
-  list[R_HISTORY] = nhistory;
-  list[R_DISSIPATED] = sums[0];
-  list[R_KEY] = family_key;
-  list[R_JOULE] = sums[1];
-  list[R_BROKEN] = (double) total_broken;
-  list[R_ANYBROKEN] = any_broken;
-  list[R_FRESH_STEP] = (double) fresh_step;
-  list[R_NFRESH] = (double) fresh_length.size();
-  list[R_NCUTS] = (double) cuts.size();
-  list[R_INTACT] = (double) intact_at_map;
-  list[R_BREAKS] = (double) breaks;
-  for (tagint t : fresh_pairs) list.push_back((double) t);
-  for (double l : fresh_length) list.push_back(l);
-  for (const PendingCut *c : cuts) {
-    list.push_back(c->crack.patch);
-    for (const double *v : {c->crack.a, c->crack.b, c->crack.c}) list.insert(list.end(), v, v + 3);
-    list.push_back(c->groupbit);
-  }
-  // the per-atom fields of the per-atom records, by name (last: fix_pd_bonds_fields.cpp)
-  append_field_list(list);
-  list[R_SIZE] = (double) list.size();
-  int size = list.size() * sizeof(double);
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(list.data(), sizeof(double), list.size(), fp);
-}
-
-void FixPDBonds::restart(char *buf)
-{
-  const double *list = (const double *) buf;
-  if (list[R_FORMAT] != RESTART_FORMAT)
-    error->all(FLERR, "Fix pd/bonds: the restart file's bonds are in another format than this build "
-               "reads (format {}; written by an older or newer PERIDYNAMICS_EXT)", RESTART_FORMAT);
-  const double nfresh = list[R_NFRESH], ncuts = list[R_NCUTS];
-  const bool sane = (list[R_BUILT] == 0.0 || list[R_BUILT] == 1.0) && list[R_MAXPARTNER] >= 1.0 &&
-      list[R_MAXPARTNER] <= 1e6 && nfresh >= 0.0 && nfresh <= 1e9 && ncuts >= 0.0 && ncuts <= 1e6 &&
-      list[R_SIZE] >= R_FIXED + 3.0 * nfresh + CUT_DOUBLES * ncuts && list[R_LOST] >= 0.0 &&
-      list[R_BROKEN] >= 0.0 && std::isfinite(list[R_DISSIPATED]) && std::isfinite(list[R_JOULE]);
-  if (!sane)
-    error->all(FLERR, "Fix pd/bonds: the restart file's bond record is damaged (inconsistent "
-               "counts); it cannot be read");
-  if ((int) list[R_WEIGHTS] != use_weights)
-    error->all(FLERR, "Fix pd/bonds: restart file bonds {} weights, the pair style now {}",
-               list[R_WEIGHTS] ? "carry" : "carry no", use_weights ? "needs them" : "does not");
-  if ((int) list[R_HISTORY] != nhistory)
-    error->all(FLERR, "Fix pd/bonds: restart file bonds carry {} history values, the pair style "
-               "now needs {}", (int) list[R_HISTORY], nhistory);
-  built = (int) list[R_BUILT];
-  resize_tables((int) list[R_MAXPARTNER]);
-  // totals are kept once, on rank 0, so the global sums carry over
-  nlost_local = comm->me == 0 ? (bigint) list[R_LOST] : 0;
-  dissipated = comm->me == 0 ? list[R_DISSIPATED] : 0.0;
-  family_key = list[R_KEY];
-  dissipated_joule = comm->me == 0 ? list[R_JOULE] : 0.0;
-  nbroken_local = comm->me == 0 ? (bigint) list[R_BROKEN] : 0;
-  any_broken = (int) list[R_ANYBROKEN];
-  fresh_step = (bigint) list[R_FRESH_STEP];
-  intact_at_map = (bigint) list[R_INTACT];
-  breaks_since_map = comm->me == 0 ? (bigint) list[R_BREAKS] : 0;
-  const double *p = list + R_FIXED;
-  fresh_pairs.assign(p, p + 2 * (size_t) nfresh);
-  p += 2 * (size_t) nfresh;
-  fresh_length.assign(p, p + (size_t) nfresh);
-  p += (size_t) nfresh;
-  pending_cuts.clear();
-  for (int c = 0; c < (int) ncuts; c++, p += CUT_DOUBLES) {
-    PendingCut cut = {"", {}, (int) p[10]};
-    cut.crack.patch = (int) p[0];
-    for (int d = 0; d < 3; d++) {
-      cut.crack.a[d] = p[1 + d];
-      cut.crack.b[d] = p[4 + d];
-      cut.crack.c[d] = p[7 + d];
-    }
-    pending_cuts.push_back(cut);
-  }
-  // the per-atom fields (last: fix_pd_bonds_fields.cpp)
-  read_field_list(p, list + (size_t) list[R_SIZE]);
 }
 
 // New row length of the per-atom bond tables (their contents are dropped:
@@ -787,85 +709,6 @@ int FixPDBonds::maxsize_restart()
   return per_atom_max(PDField::RESTART) + 1;
 }
 
-// A second evaluation of the step in which the listed bonds broke replays
-// it only if they are where they were then (after a restart, or the setup of
-// the next run); commands between runs that move atoms (displace_atoms in a
-// 'run 0' loop, set, velocity ...) make it a new evaluation, booked as such.
-bool FixPDBonds::unbreak_fresh(bigint step)
-{
-  if (step != fresh_step || fresh_pairs.empty()) return false;
-  int moved = 0, anymoved;
-  for (size_t p = 0; p < fresh_length.size() && !moved; p++) {
-    const int i = atom->map(fresh_pairs[2 * p]);
-    if (i < 0 || i >= nowned) continue;
-    for (int k = 0; k < npartner[i]; k++)
-      if (partner[i][k] == fresh_pairs[2 * p + 1] &&
-          fabs(current_length(i, k) - fresh_length[p]) > 1e-10 * fresh_length[p])
-        moved = 1;
-  }
-  MPI_Allreduce(&moved, &anymoved, 1, MPI_INT, MPI_MAX, world);
-  if (anymoved) {
-    fresh_pairs.clear();
-    fresh_length.clear();
-    return false;
-  }
-  sign_fresh(1.0);
-  return true;
-}
-
-void FixPDBonds::rebreak_fresh()
-{
-  sign_fresh(-1.0);
-}
-
-double FixPDBonds::current_length(int i, int k) const
-{
-  double **x = atom->x;
-  const int j = far[i][k];
-  const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
-  return sqrt(dx * dx + dy * dy + dz * dz);
-}
-
-// Set the sign of the listed bonds' reference lengths (on their owners).
-void FixPDBonds::sign_fresh(double sign)
-{
-  for (size_t p = 0; p < fresh_pairs.size(); p += 2) {
-    const int i = atom->map(fresh_pairs[p]);
-    if (i < 0 || i >= atom->nlocal) continue;
-    for (int k = 0; k < npartner[i]; k++)
-      if (partner[i][k] == fresh_pairs[p + 1]) r0[i][k] = sign * fabs(r0[i][k]);
-  }
-}
-
-void FixPDBonds::note_fresh(const int *idx, int n, bigint step, bool any)
-{
-  fresh_step = step;
-  fresh_pairs.clear();
-  fresh_length.clear();
-  if (!any) return;
-  std::vector<tagint> mine(2 * (size_t) n);
-  std::vector<double> mylength(n);
-  for (int q = 0; q < n; q++) {
-    const int i = idx[q] / maxpartner, k = idx[q] % maxpartner;
-    mine[2 * q] = atom->tag[i];
-    mine[2 * q + 1] = partner[i][k];
-    mylength[q] = current_length(i, k);
-  }
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int r = 1; r < comm->nprocs; r++) displs[r] = displs[r - 1] + counts[r - 1];
-  fresh_length.resize(displs.back() + counts.back());
-  MPI_Allgatherv(mylength.data(), n, MPI_DOUBLE, fresh_length.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, world);
-  for (int r = 0; r < comm->nprocs; r++) {
-    counts[r] *= 2;
-    displs[r] *= 2;
-  }
-  fresh_pairs.resize(2 * fresh_length.size());
-  MPI_Allgatherv(mine.data(), 2 * n, MPI_LMP_TAGINT, fresh_pairs.data(), counts.data(), displs.data(),
-                 MPI_LMP_TAGINT, world);
-}
-
 bigint FixPDBonds::cut_crossing(const pd_crack &crack, int groupbit)
 {
   double **x0 = atom->x0;
@@ -883,10 +726,10 @@ bigint FixPDBonds::cut_crossing(const pd_crack &crack, int groupbit)
         mine++;
       }
     }
-  breaks_since_map += mine;
+  record.add_cut(mine);
   bigint total = 0;
   MPI_Allreduce(&mine, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (total > 0) any_broken = 1;
+  if (total > 0) record.set_has_broken();
   return total;
 }
 

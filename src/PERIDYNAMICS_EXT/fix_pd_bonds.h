@@ -14,6 +14,9 @@ FixStyle(pd/bonds,FixPDBonds);
 #include "fix.h"
 #include "pd_field.h"
 
+#include "pd_family_spec.h"
+#include "pd_fracture_record.h"
+
 #include <string>
 #include <vector>
 
@@ -23,8 +26,6 @@ extern "C" {
 }
 
 namespace LAMMPS_NS {
-
-class PairPD;
 
 class FixPDBonds : public Fix {
  public:
@@ -59,44 +60,23 @@ class FixPDBonds : public Fix {
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
 
-  void set_owner(PairPD *pair) { owner = pair; }
-  // what the families were built for (pair style, horizons, weights ...)
-  double built_for() const { return family_key; }
-  void set_family_key(double key) { if (!built) family_key = key; }
+  // the families exist (built once, kept by restart)
   bool is_built() const { return built; }
   pd_bond_view view() const;
+  // the bonds as plain rows (the fracture record's replay reads and signs them)
+  PDBondTable table() const;
   // per-bond history values (nhistory per bond, laid out as the bonds), or null
   double *history_data() const { return nhistory && history ? history[0] : nullptr; }
   double bytes_per_bond() const;
-  // energy dissipated in the bonds (plastic work, fracture): this rank's
-  // share, as a sum of energy densities and in joules
-  void add_dissipated(double e, double joule = 0.0)
-  {
-    dissipated += e;
-    dissipated_joule += joule;
-  }
-  double local_dissipated() const { return dissipated; }
-  double local_dissipated_joule() const { return dissipated_joule; }
   // broken bonds: the sign of the reference length (pd_failure.h)
   double *len0_data() const { return r0 ? r0[0] : nullptr; }
-  void add_broken(bigint n)
-  {
-    nbroken_local += n;
-    breaks_since_map += n;
-  }
-  bigint local_broken() const { return nbroken_local; }
+  // what the bonds' failure has done (broken counts, dissipated energy) and
+  // the fresh-bond replay (pd_fracture_record.h); kept in restart files
+  PDFractureRecord &fracture() { return record; }
+  const PDFractureRecord &fracture() const { return record; }
   bigint local_lost() const { return nlost_local; }
-  bool has_broken() const { return any_broken; }
-  void set_has_broken() { any_broken = 1; }
-  // The bonds that broke at the last force evaluation, so that a second
-  // evaluation of that step (the setup of a next run, or after a restart)
-  // applies the same forces: unbreak_fresh() makes them intact again for it
-  // (true if it is such a replay), rebreak_fresh() breaks them after it,
-  // note_fresh() records a new step's breaks (len0 indices; all ranks call
-  // it with the same 'any': whether some rank broke a bond).
-  bool unbreak_fresh(bigint step);
-  void rebreak_fresh();
-  void note_fresh(const int *idx, int n, bigint step, bool any);
+  // the stable time step estimate of this run, for the blow-up guard's message
+  void note_stable_dt(double dt) { stable_dt = dt; }
 
   // Break the intact bonds (both ends in the group) whose reference segment
   // crosses the crack; returns how many, over all ranks.
@@ -136,7 +116,10 @@ class FixPDBonds : public Fix {
   void copy_to_ghosts(double *a, int width = 1);
 
  private:
-  PairPD *owner;
+  // the families of this run's material (copied at init from the pair style
+  // that provides them); 'serving' is false in a run without one
+  PDFamilySpec spec;
+  bool serving;
   tagint *built_tag;       // each atom's own tag when the families were built (0: none)
   int use_weights;         // 1 if bonds carry a quadrature weight
   int nhistory;            // history values per bond (e.g. plastic stretch)
@@ -151,17 +134,11 @@ class FixPDBonds : public Fix {
   int **far;               // far end as a local index (owned+ghost)
   bigint nlost_local;      // intact bonds lost (counted on rank 0)
   bigint intact_at_map;    // intact bonds over all ranks at the last mapping (-1: none yet)
-  bigint breaks_since_map; // bonds this rank broke since then (fracture, pre-cracks)
   bigint stored_total;     // bonds stored over all ranks at the last mapping
   bigint nlost_reported;   // the global count last warned about
-  double dissipated;       // this rank's share of the dissipated energy
-  double dissipated_joule; // the same in joules
-  bigint nbroken_local;    // bonds broken on this rank (fracture, not pre-cracks)
-  int any_broken;          // some bond anywhere is broken (pre-crack or fracture)
-  double family_key;       // hash of the pair settings the families were built for
-  bigint fresh_step;       // the step of the last evaluation that broke bonds (or broke none)
-  std::vector<tagint> fresh_pairs;   // its broken bonds, owner and partner tags, all ranks
-  std::vector<double> fresh_length;  // the length of each when it broke
+  double family_key;       // PDFamilySpec::key of the settings the families were built for
+  PDFractureRecord record; // broken counts, dissipated energy, fresh-bond replay
+  double stable_dt;        // this run's stable time step estimate (0: not known)
   struct PendingCut {
     std::string fixid;    // the pd/precrack fix of this run ("" when read from a restart file)
     pd_crack crack;
@@ -189,13 +166,12 @@ class FixPDBonds : public Fix {
   int pack_atom(int i, double *buf, int flag) const;
   int unpack_atom(int i, const double *buf, int flag);
   int unpack_fields(int i, const double *buf, int flag);
-  void append_field_list(std::vector<double> &list) const;
-  void read_field_list(const double *p, const double *end);
+  void append_field_list(class PDRecordWriter &out) const;
+  void read_field_list(class PDRecordReader &in);
   void communicate(double *a, int width, int how);
 
+  void take_family_spec();
   void build_families();
-  void sign_fresh(double sign);
-  double current_length(int i, int k) const;
   void map_partners(bool setup);
   void check_stored_partners();
   bigint count_lost(bigint stored, bigint intact);

@@ -18,6 +18,7 @@
 #include "atom.h"
 #include "error.h"
 #include "memory.h"
+#include "pd_bonds_record.h"
 #include "pd_compat.h"
 
 #include <cstring>
@@ -134,47 +135,39 @@ int FixPDBonds::unpack_fields(int i, const double *buf, int flag)
 }
 
 // The RESTART fields in the global restart record: their count, then for
-// each its width, flags, name length and name (8 bytes to a double).
-void FixPDBonds::append_field_list(std::vector<double> &list) const
+// each its width, flags and name.
+void FixPDBonds::append_field_list(PDRecordWriter &out) const
 {
   std::vector<const Field *> written;
   for (const Field &f : fields)
     if (f.decl.flags & PDField::RESTART) written.push_back(&f);
-  list.push_back((double) written.size());
+  out.put((int64_t) written.size());
   for (const Field *f : written) {
-    const std::string &name = f->decl.name;
-    list.push_back(f->decl.width);
-    list.push_back(f->decl.flags);
-    list.push_back((double) name.size());
-    std::vector<double> packed((name.size() + 7) / 8, 0.0);
-    memcpy(packed.data(), name.data(), name.size());
-    list.insert(list.end(), packed.begin(), packed.end());
+    out.put((int64_t) f->decl.width);
+    out.put((int64_t) f->decl.flags);
+    out.put_string(f->decl.name);
   }
 }
 
-// The field list of a restart file (p up to end): each field is found by
-// name (one not declared yet is kept with the file's width until its owner
-// declares it), and sets the layout of the per-atom records that follow.
-void FixPDBonds::read_field_list(const double *p, const double *end)
+// The field list of a restart file: each field is found by name (one not
+// declared yet is kept with the file's width until its owner declares it),
+// and sets the layout of the per-atom records that follow.
+void FixPDBonds::read_field_list(PDRecordReader &in)
 {
   const auto damaged_list = [&]() {
     error->all(FLERR, "Fix pd/bonds: the restart file's list of per-atom fields is damaged; it "
                "cannot be read");
   };
-  if (end - p < 1 || !(p[0] >= 0.0 && p[0] <= MAX_FILE_FIELDS)) damaged_list();
-  const int n = (int) *p++;
+  int64_t n = -1;
+  if (!in.get(n) || n < 0 || n > MAX_FILE_FIELDS) damaged_list();
   restart_read.clear();
-  for (int k = 0; k < n; k++) {
-    if (end - p < 3) damaged_list();
-    const double width = p[0], flags = p[1], nchars = p[2];
-    p += 3;
-    if (!(width >= 1.0 && width <= MAX_WIDTH && flags >= 0.0 && flags < 256.0 && nchars >= 1.0 &&
-          nchars <= MAX_NAME) || width != (int) width)
+  for (int64_t k = 0; k < n; k++) {
+    int64_t width = 0, flags = -1;
+    std::string name;
+    if (!in.get(width) || !in.get(flags) || !in.get_string(name)) damaged_list();
+    if (width < 1 || width > MAX_WIDTH || flags < 0 || flags >= 256 || name.empty() ||
+        (int) name.size() > MAX_NAME)
       damaged_list();
-    const size_t ndoubles = ((size_t) nchars + 7) / 8;
-    if ((size_t) (end - p) < ndoubles) damaged_list();
-    const std::string name((const char *) p, (size_t) nchars);
-    p += ndoubles;
     int id = find_field(name);
     if (id >= 0 && fields[id].decl.width != (int) width)
       error->all(FLERR, "Fix pd/bonds: per-atom field '{}' has width {} in the restart file, {} in "
@@ -187,7 +180,6 @@ void FixPDBonds::read_field_list(const double *p, const double *end)
     }
     restart_read.push_back(id);
   }
-  if (p != end) damaged_list();
   for (size_t id = 0; id < fields.size(); id++) {
     bool listed = false;
     for (int r : restart_read) listed = listed || r == (int) id;

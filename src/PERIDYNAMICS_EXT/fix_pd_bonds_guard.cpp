@@ -17,7 +17,6 @@
 
 #include "atom.h"
 #include "error.h"
-#include "pair_pd.h"
 #include "pd_error.h"
 #include "update.h"
 
@@ -27,7 +26,7 @@ using namespace LAMMPS_NS;
 
 void FixPDBonds::setup(int)
 {
-  guard_step = owner ? 0.5 * owner->smallest_horizon() : INFINITY;
+  guard_step = serving ? 0.5 * spec.smallest : INFINITY;
   guard(true);
 }
 
@@ -40,7 +39,7 @@ void FixPDBonds::end_of_step()
 // through one collective call (pd_error.h) per step.
 void FixPDBonds::guard(bool forces_only)
 {
-  if (!owner) return;
+  if (!serving) return;
   double **f = atom->f, **v = atom->v;
   const double vmax = guard_step / update->dt, vmax2 = vmax * vmax;
   std::string fault;
@@ -59,16 +58,17 @@ void FixPDBonds::guard(bool forces_only)
 std::string FixPDBonds::blow_up(int i, const char *what, double value)
 {
   double **x = atom->x;
+  const PDBondTable bonds = table();
   std::string cause;
   for (int a = 0; a < nowned && cause.empty(); a++)
     for (int k = 0; k < npartner[a]; k++)
-      if (current_length(a, k) <= 1e-9 * fabs(r0[a][k])) {
+      if (bonds.length(x, a, k) <= 1e-9 * fabs(r0[a][k])) {
         cause = fmt::format("bond {}-{} has length 0 (the two particles were pushed onto each "
                             "other; with strain order m <= 0 its force is infinite). ",
                             atom->tag[a], partner[a][k]);
         break;
       }
-  const double est = owner->stable_dt();
+  const double est = stable_dt;
   return fmt::format("Fix pd/bonds: the run is unstable at step {}: atom {} at ({:.6g}, {:.6g}, "
                      "{:.6g}) has {} {:.6g}{}. {}Likely cause: the time step {:.6g} is {:.3g} times "
                      "the stable estimate {:.6g} (reduce it), or an impact faster than the model "

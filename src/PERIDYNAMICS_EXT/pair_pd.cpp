@@ -83,13 +83,12 @@ void PairPD::allocate()
     for (int j = 0; j <= n; j++) setflag[i][j] = 0;
 }
 
-// The material styles (pd/contact is not one: it stores no bonds).
-static const char *const MATERIAL_STYLES[] = {"pd/bond", "pd/ordinary"};
-
+// The material is the pair style, or the hybrid sub-style, that is a
+// PairPD (pd/contact is not one: it stores no bonds).
 PairPD *PairPD::active(Force *force)
 {
-  for (const char *s : MATERIAL_STYLES)
-    if (auto *p = dynamic_cast<PairPD *>(force->pair_match(s, 1))) return p;
+  for (Pair *p : PDCompat::pair_styles(force))
+    if (auto *material = dynamic_cast<PairPD *>(p)) return material;
   return nullptr;
 }
 
@@ -394,42 +393,66 @@ double PairPD::init_one(int i, int j)
   return horizon(i, j);
 }
 
-// Two pd/ material sub-styles of a hybrid would share one bond store
-// (pair_match's nsub = 2 gives the second instance, or the only one).
+// Two pd/ material sub-styles of a hybrid would share one bond store.
 void PairPD::check_one_material_style()
 {
   int instances = 0;
-  for (const char *s : MATERIAL_STYLES) {
-    Pair *first = force->pair_match(s, 1, 1), *second = force->pair_match(s, 1, 2);
-    instances += (first != nullptr) + (second && second != first);
-  }
-  if (utils::strmatch(force->pair_style, "^hybrid") && instances > 1)
+  for (Pair *p : PDCompat::pair_styles(force)) instances += dynamic_cast<PairPD *>(p) != nullptr;
+  if (instances > 1)
     error->all(FLERR, "Pair {}: one pd/ material style per simulation (they would share the "
                "bond families); use one style with several atom types", style_name());
 }
 
 void PairPD::init_style()
 {
-  const std::string style = style_name();
   check_one_material_style();
-  // interface pairs not given explicitly are mixed now (LAMMPS mixes them
-  // after init_style), so that the horizons and the bond fingerprint below
-  // are complete; init_one is idempotent
+  mix_interfaces();
+  choose_failure_law();
+  check_minimize();
+  check_atom_setup();
+  check_spacing();
+  check_box();
+  take_lattice_spacing();
+  attach_bond_store();
+  report_pending = 1;    // report and per-run set-up at the first compute
+}
+
+// Interface pairs not given explicitly are mixed now (LAMMPS mixes them
+// after init_style), so that the horizons and the bond fingerprint are
+// complete when the bond store takes them; init_one is idempotent.
+void PairPD::mix_interfaces()
+{
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) init_one(i, j);
+}
+
+// One failure law for the whole style (or none).
+void PairPD::choose_failure_law()
+{
   law = PD_FAIL_NONE;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       const auto l = (pd_fail_law) (int) (setflag[i][j] ? coef[ifail][i][j] : 0);
       if (l != PD_FAIL_NONE && law != PD_FAIL_NONE && l != law)
-        error->all(FLERR, "Pair {}: one failure law for all type pairs (stretch, energy or legacy)", style);
+        error->all(FLERR, "Pair {}: one failure law for all type pairs (stretch, energy or legacy)",
+                   style_name());
       if (l != PD_FAIL_NONE) law = l;
     }
-  // minimize's line search evaluates trial states it may reject: bonds must
-  // not break or yield there
+}
+
+// minimize's line search evaluates trial states it may reject: bonds must
+// not break or yield there.
+void PairPD::check_minimize()
+{
   if (update->whichflag == 2 && (law != PD_FAIL_NONE || history_per_bond()))
     error->all(FLERR, "Pair {}: minimize with bond failure or plasticity is not supported (line "
-               "search trial states would break or yield bonds); use damped dynamics", style);
+               "search trial states would break or yield bonds); use damped dynamics", style_name());
+}
+
+// What the bonds need of the atoms and of LAMMPS.
+void PairPD::check_atom_setup()
+{
+  const std::string style = style_name();
   if (!atom->vfrac_flag || !atom->rmass_flag || !atom->x0)
     error->all(FLERR, "Pair {} requires an atom style with per-atom volume, density and reference "
                       "positions (atom_style peri)", style);
@@ -438,13 +461,14 @@ void PairPD::init_style()
                       "is created", style);
   if (!force->newton_pair)
     error->all(FLERR, "Pair {} stores each bond once and needs 'newton on' (the default)", style);
+}
 
-  // every atom needs a volume; the horizon must reach past the spacing
-  double cutmax = 0.0, hmin = INFINITY;
-  for (int i = 1; i <= atom->ntypes; i++) {
-    hmin = MIN(hmin, horizon(i, i));
-    for (int j = i; j <= atom->ntypes; j++) cutmax = MAX(cutmax, horizon(i, j));
-  }
+// Every atom needs a volume; the horizon must reach past the spacing.
+void PairPD::check_spacing()
+{
+  const std::string style = style_name();
+  double hmin = INFINITY;
+  for (int i = 1; i <= atom->ntypes; i++) hmin = MIN(hmin, horizon(i, i));
   int bad = 0;
   double spacing = 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -461,8 +485,17 @@ void PairPD::init_style()
     error->all(FLERR, "Pair {}: horizon {} is not larger than the particle spacing {} ({}): "
                "families would have almost no bonds; use about 3 spacings", style, hmin, maxspacing,
                dim() == 3 ? "cube root of the volume" : "square root of volume / thickness");
-  // a horizon longer than the whole box bonds every particle to every
-  // other (a unit slip), and LAMMPS would stop in its neighbor binning
+}
+
+// A horizon longer than the whole box bonds every particle to every other
+// (a unit slip), and LAMMPS would stop in its neighbor binning; a periodic
+// box must hold two horizons.
+void PairPD::check_box()
+{
+  const std::string style = style_name();
+  double cutmax = 0.0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) cutmax = MAX(cutmax, horizon(i, j));
   double side = 0.0;
   for (int d = 0; d < domain->dimension; d++) side = MAX(side, domain->prd[d]);
   if (cutmax > side)
@@ -473,7 +506,13 @@ void PairPD::init_style()
     if (domain->periodicity[d] && domain->prd[d] <= 2.0 * cutmax)
       error->all(FLERR, "Pair {}: periodic box length {} is not larger than twice the horizon {}",
                  style, domain->prd[d], cutmax);
+}
 
+// Legacy partial volumes need the lattice spacing, taken once (before the
+// families exist) and kept in restart files.
+void PairPD::take_lattice_spacing()
+{
+  const std::string style = style_name();
   auto *store = dynamic_cast<FixPDBonds *>(PDCompat::fix_by_id(modify, FIX_ID));
   if (legacy && lattice_spacing == 0.0 && !(store && store->is_built())) {
     const Lattice *lattice = PDCompat::lattice(domain);
@@ -484,20 +523,34 @@ void PairPD::init_style()
       error->all(FLERR, "Pair {} legacy needs a lattice with equal spacing in x, y and z", style);
     lattice_spacing = lattice->xlattice;
   }
+}
 
+// The bond store, created at the first run. It takes this style's family
+// spec at its own init (family_spec), which comes after the pair styles'.
+void PairPD::attach_bond_store()
+{
   if (!PDCompat::fix_by_id(modify, FIX_ID))
     modify->add_fix(fmt::format("{} all pd/bonds {} history {}", FIX_ID,
                                 uses_weights() ? "weights" : "noweights", history_per_bond()));
   bonds = dynamic_cast<FixPDBonds *>(PDCompat::fix_by_id(modify, FIX_ID));
   if (!bonds) error->all(FLERR, "Fix ID {} is taken by a fix that is not pd/bonds", FIX_ID);
-  bonds->set_owner(this);
   declare_fields();
-  bonds->set_family_key(family_key());
-  if (bonds->is_built() && bonds->built_for() != family_key())
-    error->all(FLERR, "Pair {}: the bond families were built for other pair settings (style, "
-               "horizons, influence, legacy or dimension changed after the first run); they are "
-               "built once: start the simulation again with the new settings", style);
-  report_pending = 1;    // report and per-run set-up at the first compute
+}
+
+// The families as the bond store builds them: every horizon, the bond
+// weight, and the fingerprint of the settings that decide them.
+PDFamilySpec PairPD::family_spec() const
+{
+  PDFamilySpec spec;
+  spec.style = style_name();
+  spec.key = family_key();
+  spec.ntypes = atom->ntypes;
+  spec.horizons.resize((size_t) (atom->ntypes + 1) * (atom->ntypes + 1), NAN);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++) spec.horizons[(size_t) i * (atom->ntypes + 1) + j] = horizon(i, j);
+  spec.smallest = smallest_horizon();
+  spec.weight = weight_rule();    // used only when the bonds carry weights
+  return spec;
 }
 
 // A fingerprint of everything that decides which bonds exist and what they
@@ -581,7 +634,7 @@ void PairPD::check_derived(int p, int i, int j)
 
 bool PairPD::failing() const
 {
-  return law != PD_FAIL_NONE || bonds->has_broken();
+  return law != PD_FAIL_NONE || bonds->fracture().has_broken();
 }
 
 // The failure state for one force evaluation of a failure-aware kernel.
@@ -609,7 +662,7 @@ pd_failure PairPD::failure_state()
   f.maxfresh = maxfresh;
   // a second evaluation of the step in which bonds last broke: they act
   // with half their force again, as the first time (see pd_ordinary.c)
-  f.replay = law != PD_FAIL_LEGACY && bonds->unbreak_fresh(update->ntimestep);
+  f.replay = law != PD_FAIL_LEGACY && bonds->fracture().unbreak_fresh(bonds->table(), update->ntimestep);
   return f;
 }
 
@@ -672,22 +725,27 @@ void PairPD::account_failure(const pd_failure &f)
   fresh = f.fresh;    // the core may have grown it
   maxfresh = f.maxfresh;
   if (f.replay) {
-    bonds->rebreak_fresh();   // also those that did not break again (moved atoms)
+    bonds->fracture().rebreak_fresh(bonds->table());   // also those that did not break again (moved atoms)
     return;
   }
   int mine = f.nbroken > 0, any;
   MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-  if (law != PD_FAIL_LEGACY) bonds->note_fresh(f.fresh, f.nfresh, update->ntimestep, any);
+  if (law != PD_FAIL_LEGACY)
+    bonds->fracture().note_fresh(bonds->table(), f.fresh, f.nfresh, update->ntimestep, any);
   if (!any) return;
-  bonds->set_has_broken();
-  bonds->add_broken(f.nbroken);
-  bonds->add_dissipated(f.released, f.released_joule);
+  bonds->fracture().set_has_broken();
+  bonds->fracture().add_broken(f.nbroken);
+  bonds->fracture().add_dissipated(f.released, f.released_joule);
   book_released();
 }
 
-double PairPD::bond_weight(int itype, int jtype, double r) const
+PDFamilySpec::Weight PairPD::weight_rule() const
 {
-  return legacy ? pd_partial_volume_legacy(r, horizon(itype, jtype), lattice_spacing) : 1.0;
+  const int partial = legacy;
+  const double spacing = lattice_spacing;
+  return [partial, spacing](double r, double horizon) {
+    return partial ? pd_partial_volume_legacy(r, horizon, spacing) : 1.0;
+  };
 }
 
 /* ---------------------------------------------------------------------- */
@@ -737,6 +795,7 @@ void PairPD::report_setup()
   double dt;
   MPI_Allreduce(&dtmin, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
   dt_estimate = dt;
+  bonds->note_stable_dt(dt);    // for the blow-up guard's message
   if (comm->me == 0) {
     std::string hs;
     for (int i = 1; i <= atom->ntypes; i++) hs += fmt::format(" {:.6g}", horizon(i, i));

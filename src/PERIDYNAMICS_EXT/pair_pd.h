@@ -1,7 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    PERIDYNAMICS_EXT: what every pd/ material pair style shares: per type
    pair coefficients given as keyword/value pairs, the bond store (fix
-   pd/bonds), restart, energy/virial tally and the setup report.
+   pd/bonds, which it creates and describes its families to), restart,
+   energy/virial tally and the setup report.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_PD_H
@@ -9,6 +10,7 @@
 
 #include "pair.h"
 #include "pd_field.h"
+#include "pd_family_spec.h"
 
 #include <string>
 #include <vector>
@@ -26,7 +28,7 @@ namespace LAMMPS_NS {
 
 class FixPDBonds;
 
-class PairPD : public Pair {
+class PairPD : public Pair, public PDFamilySource {
  public:
   // coef_names[0] must be "horizon"
   PairPD(class LAMMPS *, const std::vector<std::string> &coef_names);
@@ -45,11 +47,10 @@ class PairPD : public Pair {
   double horizon(int itype, int jtype) const { return coef[0][itype][jtype]; }
   // the style's own name, also under pair_style hybrid
   virtual const char *style_name() const = 0;
-  // quadrature weight of a new bond (used only when uses_weights())
-  virtual double bond_weight(int itype, int jtype, double r) const;
-  FixPDBonds *bond_store() const { return bonds; }
+  // the bond families this style asks the bond store for (PDFamilySource)
+  PDFamilySpec family_spec() const override;
   // the pd/ material style of the current pair style (alone or a hybrid
-  // sub-style), or null
+  // sub-style, found by type), or null
   static PairPD *active(class Force *);
   double legacy_spacing() const { return legacy ? lattice_spacing : 0.0; }
   double plate_thickness() const { return thickness; }
@@ -85,6 +86,9 @@ class PairPD : public Pair {
   virtual int parse_model(const char *) { return 0; }           // leading model word in pair_coeff
   virtual void check_coeff(int i, int j) = 0;                   // complete/validate one pair
   virtual int uses_weights() const { return legacy; }
+  // quadrature weight of a new bond (used only when uses_weights()), as a
+  // function holding copies of the settings it needs
+  virtual PDFamilySpec::Weight weight_rule() const;
   virtual int history_per_bond() const { return 0; }
   virtual bool from_file(const std::string &) const { return true; }  // take this key from files
   virtual bool between_types(int) const { return true; }           // key allowed on an I J line, I != J
@@ -100,7 +104,6 @@ class PairPD : public Pair {
   std::vector<double> parse_values(int narg, char **arg, int iarg, std::vector<double> values);
   double finite_number(const char *key, const char *text);
   void set_nobond(int i, int j);
-  void check_one_material_style();
   void check_derived(int p, int i, int j);
   pd_elastic elastic(int i, int j, const char *who);   // from K,G or E,nu coefficients
   double value(int p, int i, int j) const { return coef[p][i][j]; }
@@ -130,6 +133,18 @@ class PairPD : public Pair {
   int nradius;
   bigint radius_step;       // the reneighboring it was computed for
   const double *contact_radii();
+
+ private:
+  // the steps of init_style, in order
+  void check_one_material_style();
+  void mix_interfaces();
+  void choose_failure_law();
+  void check_minimize();
+  void check_atom_setup();
+  void check_spacing();
+  void check_box();
+  void take_lattice_spacing();
+  void attach_bond_store();
 };
 
 }    // namespace LAMMPS_NS

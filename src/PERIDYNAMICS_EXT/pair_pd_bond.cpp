@@ -110,13 +110,13 @@ void PairPDBond::compute(int eflag, int vflag)
   t.eatom = eflag_atom ? eatom : nullptr;
   pd_tally *tp = evflag ? &t : nullptr;
   if (plastic) {
-    if (bonds->has_broken() || law != PD_FAIL_NONE)
+    if (bonds->fracture().has_broken() || law != PD_FAIL_NONE)
       error->all(FLERR, "Pair pd/bond: microplastic bonds cannot be broken (no failure law or "
                  "pre-crack in a style with microplastic pairs)");
     pd_microplastic mp = {coef[YIELD][0], bonds->history_data(), 0.0, 0.0, zero_released()};
     const pd_loop L = evaluation(v, tp, nullptr);
     pd_microplastic_forces(&L, &mat, &mp);
-    bonds->add_dissipated(mp.dissipated, mp.dissipated_joule);
+    bonds->fracture().add_dissipated(mp.dissipated, mp.dissipated_joule);
     book_released();
   } else if (failing()) {
     pd_failure fail = failure_state();
@@ -128,7 +128,7 @@ void PairPDBond::compute(int eflag, int vflag)
     pd_pmb_forces(&L, &mat);
   }
   if (evflag) tally(t);
-  pvector[0] = bonds->local_dissipated();    // compute pair sums it over ranks
+  pvector[0] = bonds->fracture().local_dissipated();    // compute pair sums it over ranks
 }
 
 void PairPDBond::stable_dt_sum(double *sum)

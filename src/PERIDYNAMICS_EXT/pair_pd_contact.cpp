@@ -133,7 +133,7 @@ void PairPDContact::init_style()
   cutmax_contact = 2.0 * pd_contact_radius(dim, v, thickness);
   if (legacy) {
     if (!material || !(material->legacy_spacing() > 0.0))
-      error->all(FLERR, "Pair pd/contact legacy needs a pd/bond or pd/ordinary in legacy mode "
+      error->all(FLERR, "Pair pd/contact legacy needs a pd/ material style in legacy mode "
                  "(hybrid/overlay), whose lattice spacing sets the contact distance");
     if (friction > 0.0) error->all(FLERR, "Pair pd/contact legacy has no friction (PERI has none)");
     cutmax_contact = 1.35 * material->legacy_spacing();

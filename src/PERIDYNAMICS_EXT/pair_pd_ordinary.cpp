@@ -158,10 +158,15 @@ void PairPDOrdinary::init_style()
   PairPD::init_style();
 }
 
-double PairPDOrdinary::bond_weight(int itype, int jtype, double r) const
+// The influence function, times PERI's partial volume with 'legacy'.
+PDFamilySpec::Weight PairPDOrdinary::weight_rule() const
 {
-  return pd_influence((pd_influence_kind) influence, dim(), r, horizon(itype, jtype)) *
-      PairPD::bond_weight(itype, jtype, r);
+  const auto kind = (pd_influence_kind) influence;
+  const int d = dim();
+  const PDFamilySpec::Weight partial = PairPD::weight_rule();
+  return [kind, d, partial](double r, double horizon) {
+    return pd_influence(kind, d, r, horizon) * partial(r, horizon);
+  };
 }
 
 // N = d / m: m is the atom's own weighted volume with the surface

@@ -28,7 +28,6 @@ class PairPDOrdinary : public PairPD {
   void settings(int, char **) override;
   const char *style_name() const override { return "pd/ordinary"; }
   void init_style() override;
-  double bond_weight(int, int, double) const override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
@@ -55,6 +54,7 @@ class PairPDOrdinary : public PairPD {
   double init_one(int, int) override;
   bool between_types(int) const override;
   int uses_weights() const override { return 1; }
+  PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;
   void report_extra() override;
   void setup_run() override;

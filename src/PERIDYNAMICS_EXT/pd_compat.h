@@ -8,6 +8,9 @@
  *   PDEXT_MINIMUM_IMAGE_FLERR   domain->minimum_image(FLERR, dx, dy, dz) (12Jun2025 on)
  *   PDEXT_GET_FIX_BY_ID         modify->get_fix_by_id(id) (find_fix and fix[] are
  *                               deprecated, to be removed)
+ * and one access that no release offers publicly: the sub-styles of pair
+ * style hybrid (PairHybrid::nstyles/styles are protected in every release
+ * from 29Sep2021 on), reached through pointers to members (pair_styles).
  * Tested against 29Sep2021, 2Aug2023 and 19Nov2024. */
 #ifndef LMP_PD_COMPAT_H
 #define LMP_PD_COMPAT_H
@@ -20,8 +23,12 @@
 #include "neighbor.h"
 
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
+class Force;
+class Pair;
+
 namespace PDCompat {
 
   inline void forward_comm(Comm *comm, class Fix *fix, int size)
@@ -99,6 +106,12 @@ namespace PDCompat {
   {
     return domain->lattice && domain->lattice->style != Lattice::NONE ? domain->lattice : nullptr;
   }
+
+  /* The pair styles that act now: the sub-styles of a hybrid (hybrid,
+   * hybrid/overlay, hybrid/scaled ...), else the pair style itself; none
+   * without a pair style. Found by type, not by style name (pd_compat.cpp,
+   * which alone includes pair_hybrid.h). */
+  std::vector<Pair *> pair_styles(Force *force);
 
 }    // namespace PDCompat
 }    // namespace LAMMPS_NS

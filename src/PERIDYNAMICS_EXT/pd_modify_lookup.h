@@ -1,4 +1,5 @@
-/* Finding the bond store that the pd/ pair style created, for computes. */
+/* Finding the bond store that the pd/ material pair style created, for
+ * computes and fixes: by its fixed ID, checked by type (fix pd/bonds). */
 #ifndef LMP_PD_MODIFY_LOOKUP_H
 #define LMP_PD_MODIFY_LOOKUP_H
 
@@ -14,8 +15,8 @@ inline FixPDBonds *find_bond_store(LAMMPS *lmp, const char *who)
 {
   auto *fix = dynamic_cast<FixPDBonds *>(PDCompat::fix_by_id(lmp->modify, "PD_BONDS"));
   if (!fix)
-    lmp->error->all(FLERR, "{} needs a pd/ pair style (pd/bond, pd/ordinary) and one run or "
-                    "'run 0' before it is used, so the bond families exist", who);
+    lmp->error->all(FLERR, "{} needs a pd/ material pair style (one that stores bonds) and one "
+                    "run or 'run 0' before it is used, so the bond families exist", who);
   return fix;
 }
 

@@ -151,14 +151,14 @@ check_le("the sum matches the total after the restart", abs(rows2[-1]["c_dsum"] 
 # disagrees with this build is refused by the field's name.
 raw = open(f"{d}/f.restart", "rb").read()
 flags = 2 | 4 | 8    # MIGRATE | RESTART | OUTPUT
-entry = struct.pack("<ddd", 1.0, flags, len("weighted_volume")) + b"weighted_volume"
+entry = struct.pack("<qqq", 1, flags, len("weighted_volume")) + b"weighted_volume"
 check("the restart file lists the field by name and width", raw.count(entry) == 1)
-open(f"{d}/f.wide", "wb").write(replace_exact(raw, entry, struct.pack("<ddd", 2.0, flags, 15) + b"weighted_volume"))
+open(f"{d}/f.wide", "wb").write(replace_exact(raw, entry, struct.pack("<qqq", 2, flags, 15) + b"weighted_volume"))
 out, _ = run("read_restart f.wide\nrun 0\n", d, expect_error=True)
 check("a field of another width is an ERROR naming it",
       "per-atom field 'weighted_volume' has width 2 in the restart file, 1 in this build" in out,
       out[out.find("ERROR"):][:200])
-open(f"{d}/f.renamed", "wb").write(replace_exact(raw, b"dissipated\0", b"dissipatex\0"))
+open(f"{d}/f.renamed", "wb").write(replace_exact(raw, struct.pack("<q", 10) + b"dissipated", struct.pack("<q", 10) + b"dissipatex"))
 out, _ = run("read_restart f.renamed\nrun 0\n", d, expect_error=True)
 check("fields are read by name, not by position: a file without 'dissipated' is an ERROR naming it",
       "restart file carries no per-atom field 'dissipated'" in out, out[out.find("ERROR"):][:200])

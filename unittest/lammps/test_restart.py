@@ -28,12 +28,33 @@ for style in ["pd/bond legacy", "pd/ordinary", "pd/ordinary 2D m=0"]:
           "bonds per atom (each stored once)" not in out)
     diff = max_rel_diff(read_dump(f"{d}/one.{tag}"), read_dump(f"{d}/two.{tag}"))
     check(f"{style}: restarted run ends at bitwise the same positions", diff == 0.0, f"max rel diff {diff:.3g}")
-# A restart file whose bond record has another format tag (as one written
-# by an older or newer build) is refused by name, not misread.
-magic = struct.pack("<d", 20261201.2)
+# The bond store's global record is versioned (pd_bonds_record.h): a tag,
+# the version and the size of its fixed part come first. A record of
+# another version, one whose fixed part has another size, or one from
+# before versioning (whose first 8 bytes were the format tag 20261201.1)
+# is refused by an ERROR that names what it found and what it expects,
+# not misread.
+TAG = b"PDBONDS\0"
 raw = open(f"{d}/restart.{tag}", "rb").read()
-check("the bond record carries its format tag once", raw.count(magic) == 1)
-open(f"{d}/restart.old", "wb").write(replace_exact(raw, magic, struct.pack("<d", 20250101.0)))
-out, _ = run("read_restart restart.old\nrun 0\n", d, expect_error=True)
-check("another format is an ERROR that says so", "in another format than this build reads" in out)
+check("the bond record carries its tag once", raw.count(TAG) == 1)
+at = raw.index(TAG)
+version, fixed = struct.unpack_from("<qq", raw, at + 8)
+check("... then its version (1) and the size of its fixed part", version == 1 and fixed >= 32 and fixed % 8 == 0,
+      f"version {version}, {fixed} bytes")
+edits = {
+    "newer": (raw[:at + 8] + struct.pack("<q", 2) + raw[at + 16:],
+              "bond record is version 2; this build reads version 1 (the file was written by a newer"),
+    "resized": (raw[:at + 16] + struct.pack("<q", fixed + 8) + raw[at + 24:],
+                f"has a fixed part of {fixed + 8} bytes; this build expects {fixed} bytes for version 1"),
+    "inconsistent": (raw[:at + 24] + struct.pack("<q", struct.unpack_from("<q", raw, at + 24)[0] + 24) +
+                     raw[at + 32:], "the restart file's bond record is damaged (inconsistent counts)"),
+    "unversioned": (raw[:at] + struct.pack("<d", 20261201.1) + raw[at + 8:],
+                    "in an older format (format tag 20261201.1, before versioned records); this build "
+                    "reads bond record version 1"),
+}
+for name, (data, message) in edits.items():
+    open(f"{d}/restart.{name}", "wb").write(data)
+    out, _ = run(f"read_restart restart.{name}\nrun 0\n", d, expect_error=True)
+    check(f"a bond record {name}: an ERROR that says what it found (and expects)",
+          message in out, out.strip().splitlines()[-1] if out.strip() else "no output")
 finish()

@@ -1,0 +1,62 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDYNAMICS_EXT: what the bond store needs to know to build the bond
+   families, and nothing else of the material.
+
+   The material pair style (PairPD) describes its families as a value: the
+   horizon of every type pair, the quadrature weight of a new bond, a
+   fingerprint of everything that decides which bonds exist ('key'), and
+   its own name for messages. The store (fix pd/bonds) copies that value at
+   the start of every run from whichever pair style now provides one
+   (PDFamilySource, found by type, also as a hybrid sub-style), so it
+   never holds a pointer into a pair style: after 'pair_style none' or a
+   change of pair style it simply finds no source and keeps its families
+   as they are.
+
+   This header includes no pair or fix header: the store and the pair
+   style both include it, and not each other's.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PD_FAMILY_SPEC_H
+#define LMP_PD_FAMILY_SPEC_H
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+struct PDFamilySpec {
+  // The quadrature weight of a new bond of length r with this horizon. It
+  // holds copies of what it needs (no pointer to its pair style).
+  using Weight = std::function<double(double r, double horizon)>;
+
+  std::string style;              // the material style's name, for messages
+  double key = 0.0;               // fingerprint of the settings that decide the bonds
+  int ntypes = 0;
+  std::vector<double> horizons;   // (ntypes+1)^2: NaN for a type of another hybrid
+                                  // sub-style, 0 for 'nobond'
+  double smallest = INFINITY;     // the smallest horizon of a type of this style
+  Weight weight;                  // used only when the bonds carry weights
+
+  double horizon(int i, int j) const { return horizons[(size_t) i * (ntypes + 1) + j]; }
+  double bond_weight(int i, int j, double r) const { return weight(r, horizon(i, j)); }
+};
+
+// A pair style that stores bonds: the material base class implements it.
+// The store looks for it by type among the current pair style and its
+// hybrid sub-styles (no list of style names).
+class PDFamilySource {
+ public:
+  virtual ~PDFamilySource() = default;
+  // the families this style asks for, as of its last init_style
+  virtual PDFamilySpec family_spec() const = 0;
+};
+
+// The source among the current pair style and its hybrid sub-styles, or
+// null (pd_family_spec.cpp).
+const PDFamilySource *pd_family_source(class Force *force);
+
+}    // namespace LAMMPS_NS
+
+#endif
