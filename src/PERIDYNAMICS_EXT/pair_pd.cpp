@@ -42,9 +42,9 @@ static const pd_coef FAIL_COEF = {"fail", "failure law", PD_MIX_MAX, PD_COEF_PAI
 PairPD::PairPD(LAMMPS *lmp, const pd_coef *material_coefs, int ncoefs) :
     Pair(lmp), decl(material_coefs, material_coefs + ncoefs), nmaterial(ncoefs), ifail(ncoefs),
     coef(nullptr), legacy(0), recontact(RECONTACT_NEAR), law(nullptr), model_dim(PD_3D),
-    thickness(0.0), lattice_spacing(0.0), bonds(nullptr), released(nullptr), fresh(nullptr),
-    maxfresh(0), nreleased(0), report_pending(0), work(nullptr), nwork(0), dt_estimate(0.0),
-    radius(nullptr), nradius(0), radius_step(-1)
+    thickness(0.0), lattice_spacing(0.0), bonds(nullptr), report_pending(0), work(nullptr), nwork(0),
+    released(nullptr), fresh(nullptr), maxfresh(0), nreleased(0), dt_estimate(0.0), radius(nullptr),
+    nradius(0), radius_step(-1)
 {
   // the columns: the material's, the law of each pair, then every law's
   // coefficients (a name two laws declare is one column: its first
