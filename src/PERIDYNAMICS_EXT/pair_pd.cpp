@@ -15,10 +15,10 @@
 #include "modify.h"
 #include "neighbor.h"
 #include "pd_compat.h"
+#include "pd_failure_law.h"
 #include "update.h"
 
 #include <cmath>
-#include <cfloat>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -34,18 +34,34 @@ using namespace LAMMPS_NS;
 
 static const char *const FIX_ID = "PD_BONDS";
 
-PairPD::PairPD(LAMMPS *lmp, const std::vector<std::string> &coef_names) :
-    Pair(lmp), names(coef_names), coef(nullptr), legacy(0), recontact(RECONTACT_NEAR), law(PD_FAIL_NONE),
-    ifail(-1), is0(-1), iGc(-1), ialpha(-1), model_dim(PD_3D), thickness(0.0), lattice_spacing(0.0),
-    bonds(nullptr), released(nullptr), fresh(nullptr), maxfresh(0), s0_new(nullptr), nreleased(0),
-    report_pending(0), work(nullptr), nwork(0), dt_estimate(0.0), radius(nullptr), nradius(0),
-    radius_step(-1)
+// The law each type pair names: a row of core/pd_laws.h (the larger between
+// two types: the law of the one that fails, since all pairs share one).
+static const pd_coef FAIL_COEF = {"fail", "failure law", PD_MIX_MAX, PD_COEF_PAIR, PD_CHECK_FINITE,
+                                  0.0, 0.0, 0.0, nullptr};
+
+PairPD::PairPD(LAMMPS *lmp, const pd_coef *material_coefs, int ncoefs) :
+    Pair(lmp), decl(material_coefs, material_coefs + ncoefs), nmaterial(ncoefs), ifail(ncoefs),
+    coef(nullptr), legacy(0), recontact(RECONTACT_NEAR), law(nullptr), model_dim(PD_3D),
+    thickness(0.0), lattice_spacing(0.0), bonds(nullptr), report_pending(0), work(nullptr), nwork(0),
+    released(nullptr), fresh(nullptr), maxfresh(0), nreleased(0), dt_estimate(0.0), radius(nullptr),
+    nradius(0), radius_step(-1)
 {
-  names.insert(names.end(), {"fail", "s0", "Gc", "alpha"});
-  ialpha = coef_index("alpha");
-  ifail = coef_index("fail");
-  is0 = coef_index("s0");
-  iGc = coef_index("Gc");
+  // the columns: the material's, the law of each pair, then every law's
+  // coefficients (a name two laws declare is one column: its first
+  // declaration mixes it)
+  decl.push_back(FAIL_COEF);
+  laws = pd_failure_laws(this);
+  for (auto &l : laws)
+    for (const pd_coef &c : l->coefs) {
+      int p = coef_index(c.name);
+      if (p < 0) {
+        p = decl.size();
+        decl.push_back(c);
+        decl.back().label = nullptr;
+      }
+      l->cols.push_back(p);
+    }
+  law = laws[0].get();
   restartinfo = 1;
   single_enable = 0;
   no_virial_fdotr_compute = 1;
@@ -57,13 +73,12 @@ PairPD::~PairPD()
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
-    for (size_t p = 0; p < names.size(); p++) memory->destroy(coef[p]);
+    for (size_t p = 0; p < decl.size(); p++) memory->destroy(coef[p]);
     delete[] coef;
   }
   memory->destroy(work);
   memory->destroy(released);
   free(fresh);
-  memory->destroy(s0_new);
   memory->destroy(radius);
 }
 
@@ -73,8 +88,8 @@ void PairPD::allocate()
   const int n = atom->ntypes;
   memory->create(setflag, n + 1, n + 1, "pair:setflag");
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
-  coef = new double **[names.size()];
-  for (size_t p = 0; p < names.size(); p++) {
+  coef = new double **[decl.size()];
+  for (size_t p = 0; p < decl.size(); p++) {
     memory->create(coef[p], n + 1, n + 1, "pair:coef");
     for (int i = 0; i <= n; i++)
       for (int j = 0; j <= n; j++) coef[p][i][j] = NAN;
@@ -107,9 +122,53 @@ bool PairPD::given(int p, int i, int j) const
 
 int PairPD::coef_index(const std::string &name) const
 {
-  for (size_t p = 0; p < names.size(); p++)
-    if (names[p] == name) return (int) p;
+  for (size_t p = 0; p < decl.size(); p++)
+    if (name == decl[p].name) return (int) p;
   return -1;
+}
+
+// A coefficient as messages name it: "critical stretch s0"
+std::string PairPD::describe(const pd_coef &c) const
+{
+  const char *name = c.label ? c.label : c.name;
+  return c.what ? fmt::format("{} {}", c.what, name) : name;
+}
+
+PDFailureLaw *PairPD::law_named(const char *name) const
+{
+  for (auto &l : laws)
+    if (l->selectable() && strcmp(name, l->name) == 0) return l.get();
+  return nullptr;
+}
+
+PDFailureLaw &PairPD::law_of(double id) const
+{
+  const int k = std::isnan(id) ? 0 : (int) id;
+  return *laws[k >= 0 && k < (int) laws.size() ? k : 0];
+}
+
+// The names of the laws that 'fail' takes: "stretch, energy or legacy"
+std::string PairPD::law_names(const char *last) const
+{
+  std::vector<std::string> n;
+  for (auto &l : laws)
+    if (l->selectable()) n.push_back(l->name);
+  std::string s;
+  for (size_t k = 0; k < n.size(); k++)
+    s += (k == 0 ? "" : (k + 1 == n.size() ? last : ", ")) + n[k];
+  return s;
+}
+
+// The syntax of the laws that take a failure coefficient under its own
+// name: "'fail stretch <s0> | fail stretch Gc <Gc>'"
+std::string PairPD::law_usages(int col) const
+{
+  std::string s;
+  for (auto &l : laws) {
+    const pd_coef *c = l->entry(col);
+    if (c && !c->label) s += fmt::format("{}'{}'", s.empty() ? "" : " or ", l->usage());
+  }
+  return s;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -177,15 +236,15 @@ void PairPD::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
   int iarg = 2;
   if (iarg < narg && parse_model(arg[iarg])) iarg++;
-  const std::vector<double> values = parse_values(narg, arg, iarg, std::vector<double>(names.size(), NAN));
+  const std::vector<double> values = parse_values(narg, arg, iarg, std::vector<double>(decl.size(), NAN));
   // a line that sets no type's own pair (I I) must not carry a type's
   // material: it would be silently unused
   if (ihi < jlo || jhi < ilo)
-    for (size_t p = 0; p < names.size(); p++)
-      if (!std::isnan(values[p]) && !between_types(p))
+    for (size_t p = 0; p < decl.size(); p++)
+      if (!std::isnan(values[p]) && !(decl[p].flags & PD_COEF_PAIR))
         error->all(FLERR, "Pair {} coeff {} {}: '{}' belongs on a type's own line (I I); a line between "
                    "two types sets only the horizon and failure of their bonds", style_name(), arg[0], arg[1],
-                   names[p]);
+                   decl[p].name);
   if (set_coeff_pairs(ilo, ihi, jlo, jhi, values) == 0)
     error->all(FLERR, "Incorrect args for pair coefficients");
 }
@@ -200,54 +259,43 @@ double PairPD::finite_number(const char *key, const char *text)
   return v;
 }
 
+// A value read from the line; a key given twice on one line is an error.
+void PairPD::set_on_line(PDCoefLine &line, int p, double v)
+{
+  if (line.seen[p])
+    error->all(FLERR, "Pair {} coeff: '{}' is given twice on one line", style_name(), decl[p].name);
+  line.seen[p] = 1;
+  line.values[p] = v;
+}
+
 // keyword/value pairs from arg[iarg] on, over the given values (a material
-// file's, or NaN); a key given twice on one line is an error
+// file's, or NaN)
 std::vector<double> PairPD::parse_values(int narg, char **arg, int iarg, std::vector<double> values)
 {
   const std::string style = style_name();
-  std::vector<bool> seen(names.size(), false);
-  auto set = [&](int p, double v) {
-    if (seen[p])
-      error->all(FLERR, "Pair {} coeff: '{}' is given twice on one line", style, names[p]);
-    seen[p] = true;
-    values[p] = v;
-  };
+  PDCoefLine line = {values, std::vector<char>(decl.size(), 0)};
   while (iarg < narg) {
     if (strcmp(arg[iarg], "nobond") == 0) {
       // two types that must not bond (an impactor and its target)
-      set(0, 0.0);
+      set_on_line(line, 0, 0.0);
       iarg++;
       continue;
     }
     if (strcmp(arg[iarg], "fail") == 0) {
-      // fail stretch <s0> | fail stretch Gc <Gc> | fail energy [Gc <Gc>] |
-      // fail legacy <s00> <alpha> (LAMMPS PERI's rule, legacy mode)
-      if (iarg + 1 >= narg) error->all(FLERR, "Pair {} coeff: 'fail' needs a law: stretch, energy or legacy", style);
-      if (strcmp(arg[iarg + 1], "legacy") == 0) {
-        if (iarg + 3 >= narg) error->all(FLERR, "Pair {} coeff: 'fail legacy' needs s00 and alpha", style);
-        set(ifail, PD_FAIL_LEGACY);
-        set(is0, finite_number("s00", arg[iarg + 2]));
-        set(ialpha, finite_number("alpha", arg[iarg + 3]));
-        iarg += 4;
-        continue;
-      }
-      if (strcmp(arg[iarg + 1], "stretch") == 0) set(ifail, PD_FAIL_STRETCH);
-      else if (strcmp(arg[iarg + 1], "energy") == 0) set(ifail, PD_FAIL_ENERGY);
-      else error->all(FLERR, "Pair {} coeff: unknown failure law '{}' (stretch, energy, legacy)", style, arg[iarg + 1]);
-      iarg += 2;
-      if (iarg + 1 < narg && strcmp(arg[iarg], "Gc") == 0) {
-        set(iGc, finite_number("Gc", arg[iarg + 1]));
-        iarg += 2;
-      } else if (values[ifail] == PD_FAIL_STRETCH && iarg < narg && utils::is_double(arg[iarg])) {
-        set(is0, finite_number("s0", arg[iarg]));
-        iarg++;
-      }
+      // fail <law> and the law's own words (pd_law_<law>.cpp)
+      if (iarg + 1 >= narg)
+        error->all(FLERR, "Pair {} coeff: 'fail' needs a law: {}", style, law_names(" or "));
+      PDFailureLaw *l = law_named(arg[iarg + 1]);
+      if (!l)
+        error->all(FLERR, "Pair {} coeff: unknown failure law '{}' ({})", style, arg[iarg + 1], law_names(", "));
+      set_on_line(line, ifail, l->id);
+      iarg = l->parse(line, narg, arg, iarg + 2);
       continue;
     }
     const int p = coef_index(arg[iarg]);
     if (p < 0) {
       std::string known;
-      for (auto &n : names) known += " " + n;
+      for (auto &c : decl) known += std::string(" ") + c.name;
       const bool number = utils::is_double(arg[iarg]);
       error->all(FLERR, "Pair {} coeff: {} '{}' (expected keyword/value pairs, keywords:{} nobond){}",
                  style, number ? "a value where a keyword belongs:" : "unknown keyword", arg[iarg],
@@ -255,16 +303,11 @@ std::vector<double> PairPD::parse_values(int narg, char **arg, int iarg, std::ve
     }
     if (iarg + 1 >= narg)
       error->all(FLERR, "Pair {} coeff: keyword '{}' needs a value", style, arg[iarg]);
-    set(p, finite_number(arg[iarg], arg[iarg + 1]));
+    set_on_line(line, p, finite_number(arg[iarg], arg[iarg + 1]));
     iarg += 2;
   }
-  // an s0 on the line decides the critical stretch, PERI's rule has its
-  // own: a material file's G_c is then not used
-  if ((seen[is0] || values[ifail] == PD_FAIL_LEGACY) && !seen[iGc]) values[iGc] = NAN;
-  if (seen[iGc] && std::isnan(values[ifail]))
-    error->all(FLERR, "Pair {} coeff: 'Gc' needs a failure law: 'fail energy Gc <Gc>' or 'fail "
-               "stretch Gc <Gc>'", style);
-  return values;
+  law_of(line.values[ifail]).settle(line);
+  return line.values;
 }
 
 int PairPD::set_coeff_pairs(int ilo, int ihi, int jlo, int jhi, const std::vector<double> &values)
@@ -272,13 +315,46 @@ int PairPD::set_coeff_pairs(int ilo, int ihi, int jlo, int jhi, const std::vecto
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
     for (int j = MAX(jlo, i); j <= jhi; j++) {
-      for (size_t p = 0; p < names.size(); p++) coef[p][i][j] = values[p];
-      if (values[0] == 0.0) set_nobond(i, j);
-      else check_coeff(i, j);
+      for (size_t p = 0; p < decl.size(); p++) coef[p][i][j] = values[p];
+      if (values[0] == 0.0) {
+        set_nobond(i, j);
+      } else {
+        check_declared(i, j);
+        check_coeff(i, j);
+        check_failure(i, j);
+      }
       setflag[i][j] = 1;
       count++;
     }
   return count;
+}
+
+// The material's values of one type pair against their declarations:
+// given where required, valid, defaults where it may be given.
+void PairPD::check_declared(int i, int j)
+{
+  for (int p = 0; p < nmaterial; p++) {
+    const pd_coef &c = decl[p];
+    if ((c.flags & PD_COEF_REQUIRED) && !(given(p, i, j) && pd_coef_valid(&c, value(p, i, j))))
+      error->all(FLERR, "Pair {} coeff {} {}: {} missing{}", style_name(), i, j, describe(c),
+                 c.check == PD_CHECK_POSITIVE ? " or not positive"
+                 : c.check == PD_CHECK_RANGE  ? fmt::format(" or outside [{}, {}]", c.lo, c.hi)
+                                              : "");
+    check_value(c, p, i, j);
+    if (!given(p, i, j) && (c.flags & PD_COEF_DEFAULT) && (i == j || (c.flags & PD_COEF_PAIR)))
+      coef[p][i][j] = c.value;
+  }
+}
+
+// A given value of column p against a declaration of it
+void PairPD::check_value(const pd_coef &c, int p, int i, int j)
+{
+  const double v = value(p, i, j);
+  if (!given(p, i, j) || pd_coef_valid(&c, v)) return;
+  if (c.check == PD_CHECK_POSITIVE)
+    error->all(FLERR, "Pair {} coeff {} {}: {} must be positive, got {}", style_name(), i, j, describe(c), v);
+  error->all(FLERR, "Pair {} coeff {} {}: {} = {} is outside [{}, {}]", style_name(), i, j, describe(c), v,
+             c.lo, c.hi);
 }
 
 // Horizon 0 ('nobond'): two types that never bond; such a line carries nothing else.
@@ -287,12 +363,11 @@ void PairPD::set_nobond(int i, int j)
   if (i == j)
     error->all(FLERR, "Pair {} coeff {} {}: 'nobond' (horizon 0) is for a line between two types; a "
                "type's own horizon must be positive", style_name(), i, j);
-  for (size_t p = 1; p < names.size(); p++)
+  for (size_t p = 1; p < decl.size(); p++)
     if (given(p, i, j))
       error->all(FLERR, "Pair {} coeff {} {}: a 'nobond' line (horizon 0) takes no '{}': those "
-                 "types share no bonds", style_name(), i, j, names[p]);
-  coef[ifail][i][j] = PD_FAIL_NONE;
-  coef[is0][i][j] = INFINITY;
+                 "types share no bonds", style_name(), i, j, decl[p].name);
+  check_failure(i, j);    // none
 }
 
 // pair_coeff * * file <path> <material per type> [model] [key value ...]:
@@ -342,9 +417,9 @@ void PairPD::read_material_file(int narg, char **arg)
     char err[512];
     if (pd_material_find(text.c_str(), name, &mat, err, sizeof err))
       error->all(FLERR, "Pair {} coeff file '{}': {}", style, arg[3], err);
-    std::vector<double> values(names.size(), NAN);
-    for (size_t p = 0; p < names.size(); p++)
-      if (from_file(names[p])) values[p] = pd_material_get(&mat, names[p].c_str());
+    std::vector<double> values(decl.size(), NAN);
+    for (size_t p = 0; p < decl.size(); p++)
+      if (decl[p].flags & PD_COEF_FILE) values[p] = pd_material_get(&mat, decl[p].name);
     set_coeff_pairs(t, t, t, t, parse_values(narg, arg, iarg, values));
   }
 }
@@ -359,37 +434,32 @@ pd_elastic PairPD::elastic(int i, int j, const char *who)
     error->all(FLERR, "Pair {} coeff {} {}: give the elastic constants as K and G or as E and nu", who, i, j);
   const int a = kg ? pK : pE, b = kg ? pG : pnu;
   for (int p : {a, b})
-    if (!given(p, i, j)) error->all(FLERR, "Pair {} coeff {} {}: {} missing", who, i, j, names[p]);
+    if (!given(p, i, j)) error->all(FLERR, "Pair {} coeff {} {}: {} missing", who, i, j, decl[p].name);
   const int bad = kg ? pd_elastic_from_K_G(value(a, i, j), value(b, i, j), &m)
                      : pd_elastic_from_E_nu(value(a, i, j), value(b, i, j), &m);
   if (bad)
     error->all(FLERR, "Pair {} coeff {} {}: {} = {} and {} = {} are not an isotropic elastic "
-               "material (need K, G, E > 0 and -1 < nu < 1/2)", who, i, j, names[a],
-               value(a, i, j), names[b], value(b, i, j));
+               "material (need K, G, E > 0 and -1 < nu < 1/2)", who, i, j, decl[a].name,
+               value(a, i, j), decl[b].name, value(b, i, j));
   return m;
 }
 
 double PairPD::init_one(int i, int j)
 {
   if (setflag[i][j] == 0) {
-    // interface bonds: mean of the two materials (MS07 eq. 30), the larger
-    // horizon, the smaller critical stretch (MS07 eq. 31)
-    for (size_t p = 0; p < names.size(); p++)
-      coef[p][i][j] = 0.5 * (coef[p][i][i] + coef[p][j][j]);
-    coef[0][i][j] = MAX(coef[0][i][i], coef[0][j][j]);
-    coef[is0][i][j] = MIN(coef[is0][i][i], coef[is0][j][j]);
-    coef[ifail][i][j] = MAX(coef[ifail][i][i], coef[ifail][j][j]);
+    // bonds between two types without a line of their own: each column by
+    // its declared rule (MS07 eq. 30-31: the mean of the two materials, the
+    // larger horizon, the smaller critical stretch)
+    for (size_t p = 0; p < decl.size(); p++) {
+      if (decl[p].mix == PD_MIX_NONE && i != j && (given(p, i, i) || given(p, j, j)))
+        error->all(FLERR, "Pair {} coeff {} {}: '{}' does not mix between types: give it on a "
+                   "'pair_coeff {} {}' line", style_name(), i, j, decl[p].name, i, j);
+      coef[p][i][j] = pd_coef_mixed(decl[p].mix, coef[p][i][i], coef[p][j][j]);
+    }
   }
-  // an interface with the stretch law but no s0 of its own: the smaller of
-  // the two materials' (MS07 eq. 31); with the energy law but no G_c of its
-  // own: the mean of theirs (NaN, no failure, if one type has none)
-  if (std::isnan(coef[is0][i][j])) coef[is0][i][j] = MIN(coef[is0][i][i], coef[is0][j][j]);
-  if (coef[ifail][i][j] == PD_FAIL_ENERGY && std::isnan(coef[iGc][i][j]))
-    coef[iGc][i][j] = 0.5 * (coef[iGc][i][i] + coef[iGc][j][j]);
-  if (setflag[i][j] && coef[ifail][i][j] == PD_FAIL_ENERGY && std::isnan(coef[iGc][i][j]))
-    error->all(FLERR, "Pair {} coeff {} {}: 'fail energy' needs 'Gc <Gc>' here, or both types' own "
-               "G_c to mix", style_name(), i, j);
-  for (size_t p = 0; p < names.size(); p++) coef[p][j][i] = coef[p][i][j];
+  // what the pair's failure law derives for bonds between the types
+  if (i != j) law_of(coef[ifail][i][j]).mix(i, j, setflag[i][j]);
+  for (size_t p = 0; p < decl.size(); p++) coef[p][j][i] = coef[p][i][j];
   return horizon(i, j);
 }
 
@@ -407,7 +477,7 @@ void PairPD::init_style()
 {
   check_one_material_style();
   mix_interfaces();
-  choose_failure_law();
+  select_law();
   check_minimize();
   check_atom_setup();
   check_spacing();
@@ -426,25 +496,11 @@ void PairPD::mix_interfaces()
     for (int j = i; j <= atom->ntypes; j++) init_one(i, j);
 }
 
-// One failure law for the whole style (or none).
-void PairPD::choose_failure_law()
-{
-  law = PD_FAIL_NONE;
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      const auto l = (pd_fail_law) (int) (setflag[i][j] ? coef[ifail][i][j] : 0);
-      if (l != PD_FAIL_NONE && law != PD_FAIL_NONE && l != law)
-        error->all(FLERR, "Pair {}: one failure law for all type pairs (stretch, energy or legacy)",
-                   style_name());
-      if (l != PD_FAIL_NONE) law = l;
-    }
-}
-
 // minimize's line search evaluates trial states it may reject: bonds must
 // not break or yield there.
 void PairPD::check_minimize()
 {
-  if (update->whichflag == 2 && (law != PD_FAIL_NONE || history_per_bond()))
+  if (update->whichflag == 2 && (law->breaks() || history_per_bond()))
     error->all(FLERR, "Pair {}: minimize with bond failure or plasticity is not supported (line "
                "search trial states would break or yield bonds); use damped dynamics", style_name());
 }
@@ -566,60 +622,43 @@ double PairPD::family_key() const
   return (double) (h >> 12);
 }
 
-// Failure coefficients of one type pair, given E and nu of the material
-// (for the critical stretch from G_c, MS07 eq. 28-29).
-void PairPD::check_failure(int i, int j, double E, double nu)
+// The failure law of the run: the one every type pair that fails names.
+void PairPD::select_law()
+{
+  law = laws[0].get();
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      PDFailureLaw &l = law_of(setflag[i][j] ? coef[ifail][i][j] : NAN);
+      if (l.breaks() && law->breaks() && &l != law)
+        error->all(FLERR, "Pair {}: one failure law for all type pairs ({})", style_name(),
+                   law_names(" or "));
+      if (l.breaks()) law = &l;
+    }
+  // pair_coeff checked it; a restart file's coefficients were not
+  const std::string missing = law->unsupported();
+  if (!missing.empty())
+    error->all(FLERR, "Pair {}: 'fail {}' needs {}", style_name(), law->name, missing);
+}
+
+// The failure law of one type pair ('fail', or none) and its values: what
+// it needs of the material, no other law's coefficients, its declared
+// checks, then its own (pd_law_<name>.cpp).
+void PairPD::check_failure(int i, int j)
 {
   const std::string style = style_name();
-  const auto refuse = [&](int p, const char *why) {
-    if (given(p, i, j))
-      error->all(FLERR, "Pair {} coeff {} {}: '{}' {}", style, i, j, names[p], why);
-  };
-  if (!given(ifail, i, j)) {
-    if (given(is0, i, j) && !std::isinf(value(is0, i, j)))
-      error->all(FLERR, "Pair {} coeff {} {}: s0 needs 'fail stretch'", style, i, j);
-    refuse(ialpha, "belongs to 'fail legacy <s00> <alpha>'");
-    coef[ifail][i][j] = PD_FAIL_NONE;
-    coef[is0][i][j] = INFINITY;
-    return;
+  PDFailureLaw &l = law_of(coef[ifail][i][j]);
+  coef[ifail][i][j] = l.id;
+  if (l.breaks()) {
+    const std::string missing = l.unsupported();
+    if (!missing.empty())
+      error->all(FLERR, "Pair {} coeff {} {}: 'fail {}' needs {}", style, i, j, l.name, missing);
+    for (int p = ifail + 1; p < (int) decl.size(); p++)
+      if (given(p, i, j) && !l.declares(p))
+        error->all(FLERR, "Pair {} coeff {} {}: '{}' belongs to {}, not to '{}'", style, i, j,
+                   decl[p].name, law_usages(p), l.usage());
+    for (size_t k = 0; k < l.coefs.size(); k++) check_value(l.coefs[k], l.cols[k], i, j);
   }
-  if (value(ifail, i, j) == PD_FAIL_LEGACY) {
-    if (!legacy)
-      error->all(FLERR, "Pair {} coeff {} {}: 'fail legacy' reproduces PERI and needs the 'legacy' "
-                 "pair style keyword", style, i, j);
-    refuse(iGc, "has no use with 'fail legacy' (PERI's rule takes s00 and alpha)");
-    return;
-  }
-  refuse(ialpha, "belongs to 'fail legacy <s00> <alpha>'");
-  if (given(iGc, i, j) && !(value(iGc, i, j) > 0.0))
-    error->all(FLERR, "Pair {} coeff {} {}: Gc must be positive, got {}", style, i, j, value(iGc, i, j));
-  if (value(ifail, i, j) == PD_FAIL_STRETCH) {
-    if (given(is0, i, j)) {
-      if (!(value(is0, i, j) > 0.0))
-        error->all(FLERR, "Pair {} coeff {} {}: critical stretch s0 must be positive, got {}", style,
-                   i, j, value(is0, i, j));
-      if (given(iGc, i, j))
-        error->all(FLERR, "Pair {} coeff {} {}: 'fail stretch' takes s0 or 'Gc <Gc>', not both",
-                   style, i, j);
-    } else if (given(iGc, i, j)) {
-      // NaN when E is not known yet (an interface: from both materials in init_one)
-      coef[is0][i][j] = pd_critical_stretch(dim(), model_dim == PD_PLANE_STRAIN, E, nu,
-                                            horizon(i, j), value(iGc, i, j));
-      check_derived(is0, i, j);
-    } else if (i == j) {
-      error->all(FLERR, "Pair {} coeff {} {}: 'fail stretch' needs s0 or 'Gc <Gc>' (here or in "
-                 "the material file)", style, i, j);
-    } else {
-      coef[is0][i][j] = NAN;    // from the two materials when mixed (init_one)
-    }
-  } else {
-    refuse(is0, "is the stretch law's; 'fail energy' takes 'Gc <Gc>'");
-    coef[is0][i][j] = INFINITY;
-    // an interface without its own G_c takes the mean of its two types' (init_one)
-    if (i == j && !given(iGc, i, j))
-      error->all(FLERR, "Pair {} coeff {} {}: 'fail energy' needs 'Gc <Gc>' (here or in the "
-                 "material file)", style, i, j);
-  }
+  l.check(i, j);
 }
 
 // A coefficient derived from the inputs (micromodulus, critical stretch, Lame
@@ -629,40 +668,30 @@ void PairPD::check_derived(int p, int i, int j)
   const double v = value(p, i, j);
   if (!std::isnan(v) && !(v > 0.0 && std::isfinite(v)))
     error->all(FLERR, "Pair {} coeff {} {}: the inputs give {} = {}, not a positive finite number; "
-               "check the magnitudes and units of the constants", style_name(), i, j, names[p], v);
+               "check the magnitudes and units of the constants", style_name(), i, j, decl[p].name, v);
 }
 
 bool PairPD::failing() const
 {
-  return law != PD_FAIL_NONE || bonds->fracture().has_broken();
+  return law->breaks() || bonds->fracture().has_broken();
 }
 
 // The failure state for one force evaluation of a failure-aware kernel.
 pd_failure PairPD::failure_state()
 {
   zero_released();
-  const int nall = atom->nlocal + atom->nghost;
   pd_failure f = {};
-  f.law = law;
-  f.recontact = law == PD_FAIL_LEGACY ? 0 : recontact != RECONTACT_NONE;    // PERI drops broken bonds
+  f.law = law->id;
+  f.recontact = !law->no_recontact() && recontact != RECONTACT_NONE;
   f.contact_radius = f.recontact && recontact == RECONTACT_NEAR ? contact_radii() : nullptr;
-  if (law == PD_FAIL_STRETCH) {
-    stretch_law = {coef[is0][0]};
-    f.params = &stretch_law;
-  }
-  if (law == PD_FAIL_LEGACY) {
-    memory->grow(s0_new, nreleased, "pair:s0_new");
-    for (int i = 0; i < nall; i++) s0_new[i] = -INFINITY;
-    legacy_law = {coef[is0][0], coef[ialpha][0], atom->s0, s0_new};
-    f.params = &legacy_law;
-  }
+  f.params = law->evaluation();
   f.len0 = bonds->len0_data();
   f.released_atom = released;
   f.fresh = fresh;
   f.maxfresh = maxfresh;
   // a second evaluation of the step in which bonds last broke: they act
   // with half their force again, as the first time (see pd_ordinary.c)
-  f.replay = law != PD_FAIL_LEGACY && bonds->fracture().unbreak_fresh(bonds->table(), update->ntimestep);
+  f.replay = law->replays_fresh() && bonds->fracture().unbreak_fresh(bonds->table(), update->ntimestep);
   return f;
 }
 
@@ -717,11 +746,7 @@ void PairPD::book_released()
 // somewhere, which all ranks learn together).
 void PairPD::account_failure(const pd_failure &f)
 {
-  if (law == PD_FAIL_LEGACY) {
-    // each atom's s0 for the next step: PERI's max over its intact bonds
-    bonds->max_to_owners(s0_new);
-    for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = std::isinf(s0_new[i]) ? DBL_MAX : s0_new[i];
-  }
+  law->after_evaluation();
   fresh = f.fresh;    // the core may have grown it
   maxfresh = f.maxfresh;
   if (f.replay) {
@@ -730,7 +755,7 @@ void PairPD::account_failure(const pd_failure &f)
   }
   int mine = f.nbroken > 0, any;
   MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-  if (law != PD_FAIL_LEGACY)
+  if (law->replays_fresh())
     bonds->fracture().note_fresh(bonds->table(), f.fresh, f.nfresh, update->ntimestep, any);
   if (!any) return;
   bonds->fracture().set_has_broken();
@@ -782,6 +807,7 @@ void PairPD::report_setup()
 {
   report_pending = 0;
   setup_run();
+  law->setup_run();
   grow_work();
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) work[i] = 0.0;
@@ -807,8 +833,9 @@ void PairPD::report_setup()
     const char *rule[] = {"never (recontact none)", "once their particles touch (recontact near)",
                           "whenever compressed, at any length (recontact any)"};
     utils::logmesg(lmp, "{}: broken bonds push {}\n", style_name(),
-                   law == PD_FAIL_LEGACY ? "never (legacy PERI)" : rule[recontact]);
+                   law->no_recontact() ? fmt::format("never ({})", law->no_recontact()) : rule[recontact]);
     report_extra();
+    law->report();
   }
   if (update->dt > dt)
     error->warning(FLERR, "Pair {}: timestep {} exceeds the stable estimate {}", style_name(),
@@ -824,7 +851,7 @@ void PairPD::write_restart(FILE *fp)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       if (setflag[i][j])
-        for (size_t p = 0; p < names.size(); p++) fwrite(&coef[p][i][j], sizeof(double), 1, fp);
+        for (size_t p = 0; p < decl.size(); p++) fwrite(&coef[p][i][j], sizeof(double), 1, fp);
     }
 }
 
@@ -838,7 +865,7 @@ void PairPD::read_restart(FILE *fp)
       if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (setflag[i][j])
-        for (size_t p = 0; p < names.size(); p++) {
+        for (size_t p = 0; p < decl.size(); p++) {
           if (me == 0) utils::sfread(FLERR, &coef[p][i][j], sizeof(double), 1, fp, nullptr, error);
           MPI_Bcast(&coef[p][i][j], 1, MPI_DOUBLE, 0, world);
         }

@@ -12,14 +12,14 @@
 #include "pd_field.h"
 #include "pd_family_spec.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
 extern "C" {
 #include "pd_bonds.h"
+#include "pd_coefs.h"
 #include "pd_failure.h"
-#include "pd_law_legacy.h"
-#include "pd_law_stretch.h"
 #include "pd_loop.h"
 #include "pd_params.h"
 }
@@ -27,11 +27,20 @@ extern "C" {
 namespace LAMMPS_NS {
 
 class FixPDBonds;
+class PDBondEnergies;
+class PDFailureLaw;
+
+// One pair_coeff line as it is read: a value per coefficient column (NaN:
+// not given) and whether the line itself gave it (else a material file did).
+struct PDCoefLine {
+  std::vector<double> values;
+  std::vector<char> seen;
+};
 
 class PairPD : public Pair, public PDFamilySource {
  public:
-  // coef_names[0] must be "horizon"
-  PairPD(class LAMMPS *, const std::vector<std::string> &coef_names);
+  // the material's declared coefficients (its core table), horizon first
+  PairPD(class LAMMPS *, const pd_coef *material_coefs, int ncoefs);
   ~PairPD() override;
 
   void settings(int, char **) override;
@@ -63,15 +72,26 @@ class PairPD : public Pair, public PDFamilySource {
   // the per-atom fields the style keeps in the bond store (pd_field.h),
   // declared with it at init; compute pd/atom lists the OUTPUT ones
   virtual std::vector<PDField> per_atom_fields() const { return {}; }
+  // E and nu of the bonds between two types, for a critical stretch from
+  // G_c (MS07 eq. 28-29)
+  virtual void fracture_elastic(int i, int j, double &E, double &nu) const = 0;
+  // a state-based material's per-end bond energies ('fail energy'), or null
+  virtual const PDBondEnergies *bond_energies() const { return nullptr; }
 
  protected:
-  std::vector<std::string> names;
-  double ***coef;           // coef[p][i][j] for names[p]; NaN when not given
+  friend class PDFailureLaw;
+  // the declared coefficients: the material's, 'fail' (the law of each
+  // type pair, its row in core/pd_laws.h), then the laws' (one column per
+  // name); restart files hold them in this order
+  std::vector<pd_coef> decl;
+  int nmaterial;            // the material's are decl[0 .. nmaterial-1]
+  int ifail;                // the column of 'fail'
+  double ***coef;           // coef[p][i][j] for decl[p]; NaN when not given
   int legacy;               // reproduce legacy PERI (partial volumes, ...)
   enum { RECONTACT_NONE, RECONTACT_NEAR, RECONTACT_ANY };
   int recontact;            // broken bonds push in compression (T14 6.1.3): once their ends touch, at any length, or never
-  pd_fail_law law;          // the failure law of the style (one for all pairs)
-  int ifail, is0, iGc, ialpha;  // indices of the failure coefficients
+  std::vector<std::unique_ptr<PDFailureLaw>> laws;   // one of each, core/pd_laws.h order
+  PDFailureLaw *law;        // the failure law of the run (one for all pairs)
   pd_dimension model_dim;   // 3D, plane stress or plane strain
   double thickness;         // plate thickness of a 2D model
   double lattice_spacing;   // legacy partial volumes need it (0: not yet known)
@@ -90,8 +110,6 @@ class PairPD : public Pair, public PDFamilySource {
   // function holding copies of the settings it needs
   virtual PDFamilySpec::Weight weight_rule() const;
   virtual int history_per_bond() const { return 0; }
-  virtual bool from_file(const std::string &) const { return true; }  // take this key from files
-  virtual bool between_types(int) const { return true; }           // key allowed on an I J line, I != J
   virtual std::string family_settings() const { return ""; }         // what else shapes the bonds
   virtual void setup_run() {}                                   // first compute of a run
   virtual void stable_dt_sum(double *sum) = 0;    // add stiffness sums over nall
@@ -102,19 +120,29 @@ class PairPD : public Pair, public PDFamilySource {
   void read_material_file(int narg, char **arg);
   int set_coeff_pairs(int ilo, int ihi, int jlo, int jhi, const std::vector<double> &values);
   std::vector<double> parse_values(int narg, char **arg, int iarg, std::vector<double> values);
+  void set_on_line(PDCoefLine &line, int p, double v);
   double finite_number(const char *key, const char *text);
   void set_nobond(int i, int j);
+  void check_declared(int i, int j);
+  void check_value(const pd_coef &c, int p, int i, int j);
   void check_derived(int p, int i, int j);
   pd_elastic elastic(int i, int j, const char *who);   // from K,G or E,nu coefficients
   double value(int p, int i, int j) const { return coef[p][i][j]; }
   bool given(int p, int i, int j) const;
+  bool failure_given(int i, int j) const { return given(ifail, i, j); }   // 'fail' on the line
   int coef_index(const std::string &name) const;
+  std::string describe(const pd_coef &c) const;    // "critical stretch s0"
+  PDFailureLaw *law_named(const char *name) const;
+  PDFailureLaw &law_of(double id) const;           // a 'fail' column's law (NaN: none)
+  std::string law_names(const char *last) const;   // "stretch, energy or legacy"
+  std::string law_usages(int col) const;           // the laws that take column col, for messages
+  void select_law();
   void grow_work();
   void declare_fields();
   void tally(const pd_tally &t);
   void report_setup();
   double family_key() const;
-  void check_failure(int i, int j, double E, double nu);    // s0 from Gc, validation
+  void check_failure(int i, int j);   // the type pair's failure law and its values
   bool failing() const;
   pd_failure failure_state();
   pd_loop evaluation(const pd_bond_view &v, pd_tally *t, pd_failure *f) const;
@@ -124,9 +152,6 @@ class PairPD : public Pair, public PDFamilySource {
   double *released;         // per-atom released energy of one step (owned + ghost)
   int *fresh;               // len0 indices of the bonds one evaluation broke (malloc'd by the core)
   int maxfresh;
-  double *s0_new;           // legacy failure: the new per-atom s0 (owned + ghost)
-  pd_law_stretch stretch_law;   // the law parameters of one evaluation
-  pd_law_legacy legacy_law;
   int nreleased;
   double dt_estimate;
   double *radius;           // per-atom contact radius (owned + ghost)
@@ -138,7 +163,6 @@ class PairPD : public Pair, public PDFamilySource {
   // the steps of init_style, in order
   void check_one_material_style();
   void mix_interfaces();
-  void choose_failure_law();
   void check_minimize();
   void check_atom_setup();
   void check_spacing();

@@ -9,6 +9,7 @@
 #include "comm.h"
 #include "error.h"
 #include "fix_pd_bonds.h"
+#include "pd_failure_law.h"
 
 #include <cmath>
 #include <cstring>
@@ -21,7 +22,6 @@ extern "C" {
 
 using namespace LAMMPS_NS;
 
-enum { HORIZON, MICROMODULUS, BULK, YOUNG, POISSON, YIELD };
 enum { PMB, MICROPLASTIC };
 
 PairPDBond::~PairPDBond()
@@ -30,7 +30,7 @@ PairPDBond::~PairPDBond()
 }
 
 PairPDBond::PairPDBond(LAMMPS *lmp) :
-    PairPD(lmp, {"horizon", "c", "K", "E", "nu", "yield_stretch"}), model(PMB), plastic(0)
+    PairPD(lmp, pd_bond_coefs, PD_BOND_NCOEFS), model(PMB), plastic(0)
 {
   // compute pair pd/bond reports the dissipated (plastic) work as its first extra value
   nextra = 1;
@@ -52,51 +52,53 @@ int PairPDBond::parse_model(const char *word)
   return 1;
 }
 
+// The horizon, positive moduli and the failure law's values are checked
+// by their declarations (PairPD); this is the model's part.
 void PairPDBond::check_coeff(int i, int j)
 {
-  const double delta = value(HORIZON, i, j);
-  if (!given(HORIZON, i, j) || delta <= 0.0)
-    error->all(FLERR, "Pair pd/bond coeff {} {}: horizon missing or not positive", i, j);
-  const int nstiff = given(MICROMODULUS, i, j) + given(BULK, i, j) + given(YOUNG, i, j);
+  const double delta = horizon(i, j);
+  const int nstiff = given(PD_BOND_C, i, j) + given(PD_BOND_K, i, j) + given(PD_BOND_E, i, j);
   if (nstiff != 1)
     error->all(FLERR, "Pair pd/bond coeff {} {}: give exactly one of 'c' (micromodulus), 'E' "
                "(Young's modulus) or 'K' (bulk modulus, 3D)", i, j);
-  const int p = given(MICROMODULUS, i, j) ? MICROMODULUS : (given(BULK, i, j) ? BULK : YOUNG);
-  if (!(value(p, i, j) > 0.0))
-    error->all(FLERR, "Pair pd/bond coeff {} {}: {} must be positive, got {}", i, j, names[p], value(p, i, j));
-  if (p == BULK && dim() == 2)
+  if (given(PD_BOND_K, i, j) && dim() == 2)
     error->all(FLERR, "Pair pd/bond coeff {} {}: K is a 3D option; in 2D give E", i, j);
   const double nu_pmb = pd_pmb_poisson(model_dim);
-  if (given(POISSON, i, j) && fabs(value(POISSON, i, j) - nu_pmb) > 1e-6)
+  if (given(PD_BOND_NU, i, j) && fabs(value(PD_BOND_NU, i, j) - nu_pmb) > 1e-6)
     error->all(FLERR, "Pair pd/bond coeff {} {}: bond-based elasticity has Poisson's ratio {:.4g} "
-               "here, not nu = {}; leave nu out or use pd/ordinary", i, j, nu_pmb, value(POISSON, i, j));
+               "here, not nu = {}; leave nu out or use pd/ordinary", i, j, nu_pmb, value(PD_BOND_NU, i, j));
 
-  const double E = p == YOUNG ? value(YOUNG, i, j) : NAN;
-  if (p == BULK) coef[MICROMODULUS][i][j] = pd_pmb_micromodulus_3d(value(BULK, i, j), delta);
-  if (p == YOUNG) coef[MICROMODULUS][i][j] = pd_pmb_micromodulus(model_dim, E, delta, thickness);
-
-  check_derived(MICROMODULUS, i, j);
-  // E of the bond-based solid, for the critical stretch from G_c
-  const double Eb = value(MICROMODULUS, i, j) / pd_pmb_micromodulus(model_dim, 1.0, delta, thickness);
-  if (given(ifail, i, j) && value(ifail, i, j) == PD_FAIL_ENERGY)
-    error->all(FLERR, "Pair pd/bond coeff {} {}: 'fail energy' needs a state-based material "
-               "(pd/ordinary); bond-based bonds fail by 'fail stretch'", i, j);
-  if (given(ifail, i, j) && model == MICROPLASTIC)
+  if (given(PD_BOND_K, i, j)) coef[PD_BOND_C][i][j] = pd_pmb_micromodulus_3d(value(PD_BOND_K, i, j), delta);
+  if (given(PD_BOND_E, i, j))
+    coef[PD_BOND_C][i][j] = pd_pmb_micromodulus(model_dim, value(PD_BOND_E, i, j), delta, thickness);
+  check_derived(PD_BOND_C, i, j);
+  if (failure_given(i, j) && model == MICROPLASTIC)
     error->all(FLERR, "Pair pd/bond coeff {} {}: failure of microplastic bonds is not supported "
                "(its G_c calibration needs the plastic work, MS07 after eq. 29)", i, j);
-  check_failure(i, j, Eb, nu_pmb);
 
   if (model == MICROPLASTIC) {
-    if (!given(YIELD, i, j) || !(value(YIELD, i, j) > 0.0))
+    if (!given(PD_BOND_YIELD, i, j) || !(value(PD_BOND_YIELD, i, j) > 0.0))
       error->all(FLERR, "Pair pd/bond coeff {} {}: microplastic needs a positive yield_stretch "
                  "(about sigma_ut / 2E, MS07 eq. 50)", i, j);
     plastic = 1;
-  } else if (given(YIELD, i, j)) {
+  } else if (given(PD_BOND_YIELD, i, j)) {
     error->all(FLERR, "Pair pd/bond coeff {} {}: yield_stretch belongs to the microplastic model "
                "('pair_coeff I J microplastic ...')", i, j);
   } else {
-    coef[YIELD][i][j] = INFINITY;    // elastic pairs never yield
+    coef[PD_BOND_YIELD][i][j] = INFINITY;    // elastic pairs never yield
   }
+}
+
+double PairPDBond::contact_micromodulus(int i, int j) const
+{
+  return coef[PD_BOND_C][i][j];
+}
+
+// E of the bond-based solid of the pair's micromodulus, and its fixed nu
+void PairPDBond::fracture_elastic(int i, int j, double &E, double &nu) const
+{
+  E = value(PD_BOND_C, i, j) / pd_pmb_micromodulus(model_dim, 1.0, horizon(i, j), thickness);
+  nu = pd_pmb_poisson(model_dim);
 }
 
 void PairPDBond::compute(int eflag, int vflag)
@@ -105,15 +107,15 @@ void PairPDBond::compute(int eflag, int vflag)
   if (report_pending) report_setup();
 
   const pd_bond_view v = bonds->view();
-  const pd_pmb mat = {coef[MICROMODULUS][0]};
+  const pd_pmb mat = {coef[PD_BOND_C][0]};
   pd_tally t = {};
   t.eatom = eflag_atom ? eatom : nullptr;
   pd_tally *tp = evflag ? &t : nullptr;
   if (plastic) {
-    if (bonds->fracture().has_broken() || law != PD_FAIL_NONE)
+    if (bonds->fracture().has_broken() || law->breaks())
       error->all(FLERR, "Pair pd/bond: microplastic bonds cannot be broken (no failure law or "
                  "pre-crack in a style with microplastic pairs)");
-    pd_microplastic mp = {coef[YIELD][0], bonds->history_data(), 0.0, 0.0, zero_released()};
+    pd_microplastic mp = {coef[PD_BOND_YIELD][0], bonds->history_data(), 0.0, 0.0, zero_released()};
     const pd_loop L = evaluation(v, tp, nullptr);
     pd_microplastic_forces(&L, &mat, &mp);
     bonds->fracture().add_dissipated(mp.dissipated, mp.dissipated_joule);
@@ -134,7 +136,7 @@ void PairPDBond::compute(int eflag, int vflag)
 void PairPDBond::stable_dt_sum(double *sum)
 {
   const pd_bond_view v = bonds->view();
-  const pd_pmb mat = {coef[MICROMODULUS][0]};
+  const pd_pmb mat = {coef[PD_BOND_C][0]};
   pd_pmb_stiffness(&v, &mat, atom->type, atom->ntypes + 1, atom->vfrac, sum);
 }
 

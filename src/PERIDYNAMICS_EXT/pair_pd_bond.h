@@ -23,7 +23,8 @@ class PairPDBond : public PairPD {
   void compute(int, int) override;
   void coeff(int, char **) override;
   const char *style_name() const override { return "pd/bond"; }
-  double contact_micromodulus(int i, int j) const override { return coef[1][i][j]; }
+  double contact_micromodulus(int i, int j) const override;
+  void fracture_elastic(int i, int j, double &E, double &nu) const override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
 
@@ -34,7 +35,6 @@ class PairPDBond : public PairPD {
   int parse_model(const char *) override;
   void check_coeff(int, int) override;
   int history_per_bond() const override { return plastic; }
-  bool from_file(const std::string &key) const override { return key != "nu"; }
   void stable_dt_sum(double *) override;
 };
 

@@ -23,7 +23,6 @@
 
 extern "C" {
 #include "pd_influence.h"
-#include "pd_law_energy.h"
 #include "pd_ordinary.h"
 #include "pd_params.h"
 #include "pd_timestep.h"
@@ -31,12 +30,9 @@ extern "C" {
 
 using namespace LAMMPS_NS;
 
-enum { HORIZON, BULK, SHEAR, YOUNG, POISSON, ORDER };
-
 PairPDOrdinary::PairPDOrdinary(LAMMPS *lmp) :
-    PairPD(lmp, {"horizon", "K", "G", "E", "nu", "m"}), influence(-1),
-    per_atom_norm(0), order(0.5), bulk_volume(nullptr), lambda_bar(nullptr), mu_bar(nullptr),
-    strain(nullptr), nstrain(0), beta(nullptr), gc_pair(nullptr)
+    PairPD(lmp, pd_ordinary_coefs, PD_ORD_NCOEFS), influence(-1), per_atom_norm(0), order(0.5),
+    bulk_volume(nullptr), lambda_bar(nullptr), mu_bar(nullptr), strain(nullptr), nstrain(0)
 {
 }
 
@@ -46,8 +42,6 @@ PairPDOrdinary::~PairPDOrdinary()
   memory->destroy(lambda_bar);
   memory->destroy(mu_bar);
   memory->destroy(strain);
-  memory->destroy(beta);
-  memory->destroy(gc_pair);
 }
 
 void PairPDOrdinary::settings(int narg, char **arg)
@@ -81,54 +75,26 @@ std::string PairPDOrdinary::family_settings() const
   return pd_influence_name((pd_influence_kind) influence);
 }
 
-// Each atom's force state uses its own type's material (pair_coeff I I); an
-// I J line with I != J sets only the horizon of the bonds between the types.
-bool PairPDOrdinary::between_types(int p) const
-{
-  return p == HORIZON || p == ifail || p == is0 || p == iGc || p == ialpha;
-}
-
+// The horizon, positive moduli, m's range and the failure law's values are
+// checked by their declarations (PairPD); a line between two types gives
+// only the horizon and failure of their bonds (each atom's force state
+// uses its own type's material).
 void PairPDOrdinary::check_coeff(int i, int j)
 {
-  if (!given(HORIZON, i, j) || value(HORIZON, i, j) <= 0.0)
-    error->all(FLERR, "Pair pd/ordinary coeff {} {}: horizon missing or not positive", i, j);
-  if (i != j) {
-    // interface bonds: their own failure (s0, or G_c: the critical stretch
-    // follows in init_one, when both materials are known), else mixed
-    check_failure(i, j, NAN, NAN);
-    return;
-  }
-  for (int p : {BULK, SHEAR, YOUNG})
-    if (given(p, i, j) && !(value(p, i, j) > 0.0))
-      error->all(FLERR, "Pair pd/ordinary coeff {} {}: {} must be positive, got {}", i, j, names[p],
-                 value(p, i, j));
+  if (i != j) return;
   const pd_elastic m = elastic(i, j, "pd/ordinary");
-  coef[BULK][i][j] = m.K;
-  coef[SHEAR][i][j] = m.G;
-  coef[YOUNG][i][j] = m.E;
-  coef[POISSON][i][j] = m.nu;
-  for (int p : {BULK, SHEAR, YOUNG}) check_derived(p, i, j);
-  check_failure(i, j, m.E, m.nu);
-  if (!given(ORDER, i, j)) coef[ORDER][i][j] = 0.5;
-  if (!(value(ORDER, i, j) <= 1.0 && value(ORDER, i, j) >= -4.0))
-    error->all(FLERR, "Pair pd/ordinary coeff {} {}: strain order m = {} is outside [-4, 1]", i, j,
-               value(ORDER, i, j));
+  coef[PD_ORD_K][i][j] = m.K;
+  coef[PD_ORD_G][i][j] = m.G;
+  coef[PD_ORD_E][i][j] = m.E;
+  coef[PD_ORD_NU][i][j] = m.nu;
+  for (int p : {PD_ORD_K, PD_ORD_G, PD_ORD_E}) check_derived(p, i, j);
 }
 
-// An interface with the stretch law and its own G_c: the critical stretch
-// of bond-based elasticity (MS07 eq. 28-29) for the two materials' mean E
-// and nu, as for a type's own bonds.
-double PairPDOrdinary::init_one(int i, int j)
+// E and nu of a type's material; between two types, their means
+void PairPDOrdinary::fracture_elastic(int i, int j, double &E, double &nu) const
 {
-  if (i != j && setflag[i][j] && value(ifail, i, j) == PD_FAIL_STRETCH && std::isnan(value(is0, i, j)) &&
-      given(iGc, i, j)) {
-    coef[is0][i][j] = pd_critical_stretch(dim(), model_dim == PD_PLANE_STRAIN,
-                                          0.5 * (value(YOUNG, i, i) + value(YOUNG, j, j)),
-                                          0.5 * (value(POISSON, i, i) + value(POISSON, j, j)),
-                                          horizon(i, j), value(iGc, i, j));
-    check_derived(is0, i, j);
-  }
-  return PairPD::init_one(i, j);
+  E = 0.5 * (value(PD_ORD_E, i, i) + value(PD_ORD_E, j, j));
+  nu = 0.5 * (value(PD_ORD_NU, i, i) + value(PD_ORD_NU, j, j));
 }
 
 void PairPDOrdinary::init_style()
@@ -148,11 +114,11 @@ void PairPDOrdinary::init_style()
   for (int i = 1; i <= atom->ntypes; i++) {
     if (!setflag[i][i]) continue;
     if (!first) first = i;
-    if (coef[ORDER][i][i] != coef[ORDER][first][first])
+    if (coef[PD_ORD_M][i][i] != coef[PD_ORD_M][first][first])
       error->all(FLERR, "Pair pd/ordinary: all types need the same strain order m ({} has {}, {} has {})",
-                 i, coef[ORDER][i][i], first, coef[ORDER][first][first]);
+                 i, coef[PD_ORD_M][i][i], first, coef[PD_ORD_M][first][first]);
   }
-  order = first ? coef[ORDER][first][first] : 0.5;
+  order = first ? coef[PD_ORD_M][first][first] : 0.5;
   if (legacy && order != 0.5)
     error->all(FLERR, "Pair pd/ordinary legacy reproduces peri/lps, which is m = 0.5 (got {})", order);
   PairPD::init_style();
@@ -193,45 +159,9 @@ void PairPDOrdinary::setup_run()
   for (int i = 0; i < atom->nlocal; i++)
     mine[atom->type[i]] = MAX(mine[atom->type[i]], bonds->weighted_volume()[i]);
   MPI_Allreduce(mine.data(), bulk_volume, ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
-  memory->destroy(beta);
-  memory->create(beta, ntypes + 1, "pair:beta");
-  std::vector<double> moment(ntypes + 1, 0.0);
-  if (law == PD_FAIL_ENERGY) {
-    // the complete family's moment sum w V / |xi|, the largest of the type
-    grow_work();
-    const int nall = atom->nlocal + atom->nghost;
-    for (int i = 0; i < nall; i++) work[i] = 0.0;
-    const pd_bond_view v = bonds->view();
-    pd_failure_moment(&v, atom->vfrac, work);
-    bonds->sum_to_owners(work);
-    std::vector<double> mine(ntypes + 1, 0.0);
-    for (int i = 0; i < atom->nlocal; i++) mine[atom->type[i]] = MAX(mine[atom->type[i]], work[i]);
-    MPI_Allreduce(mine.data(), moment.data(), ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
-  }
-  // beta per unit G_c, calibrated on each type's lattice; every bond takes
-  // the G_c of its type pair (an interface has its own)
-  memory->destroy(gc_pair);
-  memory->create(gc_pair, (ntypes + 1) * (ntypes + 1), "pair:gc_pair");
-  for (int t = 0; t <= ntypes; t++) beta[t] = 0.0;
-  for (int ti = 0; ti <= ntypes; ti++)
-    for (int tj = 0; tj <= ntypes; tj++) {
-      const bool fails = ti && tj && law == PD_FAIL_ENERGY && coef[ifail][ti][tj] == PD_FAIL_ENERGY &&
-          std::isfinite(coef[iGc][ti][tj]);
-      gc_pair[ti * (ntypes + 1) + tj] = fails ? coef[iGc][ti][tj] : INFINITY;
-      if (!fails) continue;
-      // the continuum integral must exist (T14 eq. 6.1-6.2) ...
-      if (pd_energy_failure_beta((pd_influence_kind) influence, dim(), coef[HORIZON][ti][tj], 1.0) < 0.0)
-        error->all(FLERR, "Pair pd/ordinary: 'fail energy' with influence {} in 2D: the G_c "
-                   "integral diverges (T14 eq. 6.2); use influence constant or tupek",
-                   pd_influence_name((pd_influence_kind) influence));
-    }
-  // ... and beta is calibrated on the lattice itself
-  if (law == PD_FAIL_ENERGY)
-    for (int t = 1; t <= ntypes; t++)
-      beta[t] = pd_energy_failure_beta_lattice(dim(), 1.0, bulk_volume[t], moment[t]);
   for (int t = 1; t <= ntypes; t++) {
     pd_elastic m;
-    pd_elastic_from_K_G(coef[BULK][t][t], coef[SHEAR][t][t], &m);
+    pd_elastic_from_K_G(coef[PD_ORD_K][t][t], coef[PD_ORD_G][t][t], &m);
     const pd_lame l = pd_ordinary_lame(model_dim, &m);
     lambda_bar[t] = l.lambda;
     mu_bar[t] = l.mu;
@@ -239,13 +169,10 @@ void PairPDOrdinary::setup_run()
 }
 
 // Per-atom state in the bond store: the dilatation of owned atoms (compute
-// pd/atom lists it), A = lambda theta N and B = 2 mu N (owned + ghost), and
-// with the energy law beta N for G_c = 1 (owned + ghost).
+// pd/atom lists it), A = lambda theta N and B = 2 mu N (owned + ghost).
 std::vector<PDField> PairPDOrdinary::per_atom_fields() const
 {
-  std::vector<PDField> f = {{"dilatation", 1, PDField::OUTPUT}, {"ordinary_ab", 2, PDField::FORWARD}};
-  if (law == PD_FAIL_ENERGY) f.push_back({"energy_failure_crit", 1, PDField::FORWARD});
-  return f;
+  return {{"dilatation", 1, PDField::OUTPUT}, {"ordinary_ab", 2, PDField::FORWARD}};
 }
 
 double *PairPDOrdinary::state(int f) const
@@ -257,7 +184,7 @@ void PairPDOrdinary::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   grow_work();
-  double *theta = state(F_DILATATION), *abstate = state(F_AB), *crit = state(F_CRIT);
+  double *theta = state(F_DILATATION), *abstate = state(F_AB);
   if (report_pending) report_setup();
 
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
@@ -292,13 +219,6 @@ void PairPDOrdinary::compute(int eflag, int vflag)
     }
   }
   bonds->forward(field_id[F_AB]);
-  if (law == PD_FAIL_ENERGY) {
-    // beta N is fixed per atom: ghosts need it again only after reneighboring
-    for (int i = 0; i < nlocal; i++) crit[i] = beta[type[i]] * norm(i);
-    energy_law = {crit, gc_pair};
-    fail.params = &energy_law;
-    if (neighbor->ago == 0) bonds->forward(field_id[F_CRIT]);
-  }
   pd_ordinary_forces(&L, &st);
   if (fails) account_failure(fail);
   if (evflag) tally(t);
@@ -322,14 +242,6 @@ void PairPDOrdinary::report_extra()
   std::string lame;
   for (int t = 1; t <= atom->ntypes; t++)
     lame += fmt::format(" type {}: lambda_bar {:.4g} mu_bar {:.4g};", t, lambda_bar[t], mu_bar[t]);
-  if (law == PD_FAIL_ENERGY)
-    for (int t = 1; t <= atom->ntypes; t++) {
-      const double gc = gc_pair[t * (atom->ntypes + 1) + t];
-      if (std::isfinite(gc))
-        lame += fmt::format(" type {} energy failure beta {:.4g} (continuum {:.4g});", t, beta[t] * gc,
-                            pd_energy_failure_beta((pd_influence_kind) influence, dim(),
-                                                   coef[HORIZON][t][t], gc));
-    }
   utils::logmesg(lmp, "pd/ordinary: strain order m = {}, influence {}, {};{}\n", order,
                  pd_influence_name((pd_influence_kind) influence),
                  per_atom_norm ? "normalized per atom (surface correction)"
@@ -366,7 +278,7 @@ void *PairPDOrdinary::extract(const char *name, int &dim)
 double PairPDOrdinary::contact_micromodulus(int i, int j) const
 {
   // peri/lps's short-range constant: 18 K / (pi delta^4) of the first type
-  if (legacy) return pd_pmb_micromodulus_3d(coef[BULK][i][i], horizon(i, j));
-  const double E = 0.5 * (coef[YOUNG][i][i] + coef[YOUNG][j][j]);
+  if (legacy) return pd_pmb_micromodulus_3d(coef[PD_ORD_K][i][i], horizon(i, j));
+  const double E = 0.5 * (coef[PD_ORD_E][i][i] + coef[PD_ORD_E][j][j]);
   return pd_pmb_micromodulus(model_dim, E, horizon(i, j), thickness);
 }

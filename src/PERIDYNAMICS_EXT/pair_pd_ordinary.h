@@ -13,14 +13,11 @@ PairStyle(pd/ordinary,PairPDOrdinary);
 #define LMP_PAIR_PD_ORDINARY_H
 
 #include "pair_pd.h"
-
-extern "C" {
-#include "pd_law_energy.h"
-}
+#include "pd_failure_law.h"
 
 namespace LAMMPS_NS {
 
-class PairPDOrdinary : public PairPD {
+class PairPDOrdinary : public PairPD, public PDBondEnergies {
  public:
   PairPDOrdinary(class LAMMPS *);
   ~PairPDOrdinary() override;
@@ -33,6 +30,11 @@ class PairPDOrdinary : public PairPD {
   void *extract(const char *, int &) override;
   double contact_micromodulus(int, int) const override;
   std::vector<PDField> per_atom_fields() const override;
+  void fracture_elastic(int i, int j, double &E, double &nu) const override;
+  const PDBondEnergies *bond_energies() const override { return this; }
+  double family_norm(int i) const override { return norm(i); }
+  double complete_family_volume(int type) const override { return bulk_volume[type]; }
+  pd_influence_kind influence_kind() const override { return (pd_influence_kind) influence; }
 
  protected:
   int influence;       // pd_influence_kind
@@ -41,18 +43,13 @@ class PairPDOrdinary : public PairPD {
   double *bulk_volume; // per type: weighted volume of a complete family
   double *lambda_bar, *mu_bar;    // per type: peridynamic Lame constants
   // per-atom fields in the bond store (per_atom_fields(), field_id)
-  enum { F_DILATATION, F_AB, F_CRIT };
+  enum { F_DILATATION, F_AB };
   double *state(int f) const;
   double *strain;      // per-bond strain, reused by the force pass (m != 1/2)
   bigint nstrain;
-  double *beta;        // per type: energy-failure beta (T14 eq. 6.3) for G_c = 1
-  double *gc_pair;     // per type pair G_c of the energy law (+inf: no failure)
-  struct pd_law_energy energy_law;    // its parameters for one evaluation
 
   int parse_setting(int, char **, int) override;
   void check_coeff(int, int) override;
-  double init_one(int, int) override;
-  bool between_types(int) const override;
   int uses_weights() const override { return 1; }
   PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;

@@ -6,6 +6,22 @@
 
 #include <math.h>
 
+const pd_coef pd_bond_coefs[PD_BOND_NCOEFS] = {
+    [PD_BOND_HORIZON] = PD_COEF_HORIZON,
+    [PD_BOND_C] = {.name = "c", .what = "micromodulus", .mix = PD_MIX_MEAN,
+                   .flags = PD_COEF_PAIR | PD_COEF_FILE, .check = PD_CHECK_POSITIVE},
+    [PD_BOND_K] = {.name = "K", .what = "bulk modulus", .mix = PD_MIX_MEAN,
+                   .flags = PD_COEF_PAIR | PD_COEF_FILE, .check = PD_CHECK_POSITIVE},
+    [PD_BOND_E] = {.name = "E", .what = "Young's modulus", .mix = PD_MIX_MEAN,
+                   .flags = PD_COEF_PAIR | PD_COEF_FILE, .check = PD_CHECK_POSITIVE},
+    /* not from files: theirs is the real material's, not the model's */
+    [PD_BOND_NU] = {.name = "nu", .what = "Poisson's ratio", .mix = PD_MIX_MEAN,
+                    .flags = PD_COEF_PAIR, .check = PD_CHECK_FINITE},
+    /* the model checks it (microplastic needs it, pmb refuses it) */
+    [PD_BOND_YIELD] = {.name = "yield_stretch", .what = "yield stretch", .mix = PD_MIX_MEAN,
+                       .flags = PD_COEF_PAIR | PD_COEF_FILE, .check = PD_CHECK_FINITE},
+};
+
 static inline double pmb_strain(void *mat, const pd_bond *bd)
 {
   (void) mat;

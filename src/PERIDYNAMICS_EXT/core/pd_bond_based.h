@@ -2,7 +2,24 @@
 #ifndef PD_BOND_BASED_H
 #define PD_BOND_BASED_H
 
+#include "pd_coefs.h"
 #include "pd_loop.h"
+
+/* The pair_coeff keywords of pair_style pd/bond (pd_bond_coefs, in this
+ * order): horizon, micromodulus c or the modulus it comes from (K, E; nu
+ * only as a check: bond-based elasticity fixes it), and the yield stretch
+ * of microplastic bonds. A line between two types defines the whole bond
+ * (stiffness too); unlike types mix by the mean. */
+enum {
+  PD_BOND_HORIZON,
+  PD_BOND_C,
+  PD_BOND_K,
+  PD_BOND_E,
+  PD_BOND_NU,
+  PD_BOND_YIELD,
+  PD_BOND_NCOEFS
+};
+extern const pd_coef pd_bond_coefs[PD_BOND_NCOEFS];
 
 /* Micromoduli c per type pair (pd_loop.ntypes per row, indexed by the type
  * array). */

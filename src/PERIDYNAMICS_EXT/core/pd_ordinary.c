@@ -5,6 +5,23 @@
 
 #include <math.h>
 
+const pd_coef pd_ordinary_coefs[PD_ORD_NCOEFS] = {
+    [PD_ORD_HORIZON] = PD_COEF_HORIZON,
+    [PD_ORD_K] = {.name = "K", .what = "bulk modulus", .mix = PD_MIX_OWN, .flags = PD_COEF_FILE,
+                  .check = PD_CHECK_POSITIVE},
+    [PD_ORD_G] = {.name = "G", .what = "shear modulus", .mix = PD_MIX_OWN, .flags = PD_COEF_FILE,
+                  .check = PD_CHECK_POSITIVE},
+    [PD_ORD_E] = {.name = "E", .what = "Young's modulus", .mix = PD_MIX_OWN, .flags = PD_COEF_FILE,
+                  .check = PD_CHECK_POSITIVE},
+    /* its range with the other constant: an isotropic elastic material */
+    [PD_ORD_NU] = {.name = "nu", .what = "Poisson's ratio", .mix = PD_MIX_OWN, .flags = PD_COEF_FILE,
+                   .check = PD_CHECK_FINITE},
+    /* Seth-Hill order; one for all types (checked when a run starts) */
+    [PD_ORD_M] = {.name = "m", .what = "strain order", .mix = PD_MIX_OWN,
+                  .flags = PD_COEF_FILE | PD_COEF_DEFAULT, .check = PD_CHECK_RANGE, .lo = -4.0,
+                  .hi = 1.0, .value = 0.5},
+};
+
 /* Strain of order m as a function of the length ratio, in three forms so
  * the common orders pay for no pow(): m = 1/2 (LPS stretch), m = 0 (log). */
 enum { ORDER_HALF, ORDER_LOG, ORDER_ANY };

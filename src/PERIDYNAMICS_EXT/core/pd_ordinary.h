@@ -10,7 +10,24 @@
 #ifndef PD_ORDINARY_H
 #define PD_ORDINARY_H
 
+#include "pd_coefs.h"
 #include "pd_loop.h"
+
+/* The pair_coeff keywords of pair_style pd/ordinary (pd_ordinary_coefs, in
+ * this order): horizon, the elastic constants (K and G or E and nu) and the
+ * strain order m. Each atom's force state uses its own type's material, so
+ * a line between two types gives only the horizon (and failure) of their
+ * bonds. */
+enum {
+  PD_ORD_HORIZON,
+  PD_ORD_K,
+  PD_ORD_G,
+  PD_ORD_E,
+  PD_ORD_NU,
+  PD_ORD_M,
+  PD_ORD_NCOEFS
+};
+extern const pd_coef pd_ordinary_coefs[PD_ORD_NCOEFS];
 
 /* Per-step work arrays over owned and ghost atoms. */
 typedef struct pd_ordinary_state {

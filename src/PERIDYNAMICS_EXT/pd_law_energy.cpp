@@ -1,0 +1,145 @@
+/* ----------------------------------------------------------------------
+   PERIDYNAMICS_EXT: 'fail energy [Gc <Gc>]', energy-based failure of a
+   state-based material (T14 eq. 6.1-6.5; the bond test and the calibration:
+   core/pd_law_energy.{h,c}).
+------------------------------------------------------------------------- */
+
+#include "pd_failure_law.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_pd_bonds.h"
+#include "memory.h"
+#include "neighbor.h"
+#include "pair_pd.h"
+
+#include <cmath>
+
+extern "C" {
+#include "pd_law_energy.h"
+}
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+enum { GC };
+const pd_coef COEFS[] = {
+    // bonds between two types without their own: the mean (none if a type has none)
+    {"Gc", "fracture energy", PD_MIX_MEAN, PD_COEF_PAIR | PD_COEF_FILE, PD_CHECK_POSITIVE, 0.0, 0.0, 0.0,
+     nullptr},
+};
+
+class LawEnergy : public PDFailureLaw {
+ public:
+  LawEnergy(PairPD *pair, pd_fail_law id) : PDFailureLaw(pair, id, "energy", COEFS, 1) {}
+  ~LawEnergy() override { memory->destroy(crit); }
+
+  std::string usage() const override { return "fail energy [Gc <Gc>]"; }
+
+  std::string unsupported() const override
+  {
+    if (pair->bond_energies()) return "";
+    return "a state-based material (pd/ordinary): it weighs the energy each bond end holds against "
+           "G_c; bond-based bonds fail by 'fail stretch'";
+  }
+
+  int parse(PDCoefLine &line, int narg, char **arg, int iarg) override
+  {
+    return take_keyword(line, GC, narg, arg, iarg);
+  }
+
+  void check(int i, int j) override
+  {
+    // bonds between two types without their own G_c take their types' mean (mix)
+    if (i == j && !given(GC, i, j))
+      error->all(FLERR, "Pair {} coeff {} {}: 'fail energy' needs 'Gc <Gc>' (here or in the material "
+                 "file)", style(), i, j);
+  }
+
+  void mix(int i, int j, bool explicit_pair) override
+  {
+    if (std::isnan(value(GC, i, j)))
+      value(GC, i, j) = pd_coef_mixed(COEFS[GC].mix, value(GC, i, i), value(GC, j, j));
+    if (explicit_pair && std::isnan(value(GC, i, j)))
+      error->all(FLERR, "Pair {} coeff {} {}: 'fail energy' needs 'Gc <Gc>' here, or both types' own "
+                 "G_c to mix", style(), i, j);
+  }
+
+  // G_c per type pair (every bond takes its pair's: an interface has its
+  // own), and beta per unit G_c calibrated on each type's lattice
+  void setup_run() override
+  {
+    const PDBondEnergies *m = pair->bond_energies();
+    const int ntypes = atom->ntypes, n = ntypes + 1;
+    gc.assign(n * n, INFINITY);
+    bool fails = false;
+    for (int ti = 1; ti <= ntypes; ti++)
+      for (int tj = 1; tj <= ntypes; tj++)
+        if (&law_of(ti, tj) == this && std::isfinite(value(GC, ti, tj))) {
+          gc[ti * n + tj] = value(GC, ti, tj);
+          fails = true;
+        }
+    // the continuum integral must exist (T14 eq. 6.1-6.2) ...
+    if (fails && dim() == 2 && pd_influence_singular(m->influence_kind()))
+      error->all(FLERR, "Pair {}: 'fail energy' with influence {} in 2D: the G_c integral diverges "
+                 "(T14 eq. 6.2); use influence constant or tupek", style(),
+                 pd_influence_name(m->influence_kind()));
+    // ... and beta is calibrated on the lattice itself: the complete
+    // family's moment sum w V / |xi|, the largest of the type
+    const int nall = atom->nlocal + atom->nghost;
+    std::vector<double> sum(nall, 0.0), mine(n, 0.0), moment(n, 0.0);
+    const pd_bond_view v = bonds()->view();
+    pd_failure_moment(&v, atom->vfrac, sum.data());
+    bonds()->sum_to_owners(sum.data());
+    for (int i = 0; i < atom->nlocal; i++) mine[atom->type[i]] = MAX(mine[atom->type[i]], sum[i]);
+    MPI_Allreduce(mine.data(), moment.data(), n, MPI_DOUBLE, MPI_MAX, world);
+    beta.assign(n, 0.0);
+    for (int t = 1; t <= ntypes; t++)
+      beta[t] = pd_energy_failure_beta_lattice(dim(), 1.0, m->complete_family_volume(t), moment[t]);
+  }
+
+  // beta N per atom for G_c = 1; fixed per atom, so ghosts need it again
+  // only after reneighboring
+  const void *evaluation() override
+  {
+    const PDBondEnergies *m = pair->bond_energies();
+    if (atom->nmax > ncrit) {
+      ncrit = atom->nmax;
+      memory->destroy(crit);
+      memory->create(crit, ncrit, "pd/energy:crit");
+    }
+    for (int i = 0; i < atom->nlocal; i++) crit[i] = beta[atom->type[i]] * m->family_norm(i);
+    if (neighbor->ago == 0) bonds()->copy_to_ghosts(crit);
+    params = {crit, gc.data()};
+    return &params;
+  }
+
+  void report() const override
+  {
+    const PDBondEnergies *m = pair->bond_energies();
+    const int n = atom->ntypes + 1;
+    std::string types;
+    for (int t = 1; t < n; t++)
+      if (std::isfinite(gc[t * n + t]))
+        types += fmt::format(" type {} beta {:.4g} (continuum {:.4g});", t, beta[t] * gc[t * n + t],
+                             pd_energy_failure_beta(m->influence_kind(), dim(), pair->horizon(t, t),
+                                                    gc[t * n + t]));
+    utils::logmesg(lmp, "{}: fail energy:{}\n", style(), types);
+  }
+
+ private:
+  std::vector<double> gc;      // per type pair G_c (+inf: the pair does not fail)
+  std::vector<double> beta;    // per type beta for G_c = 1
+  double *crit = nullptr;      // per atom beta N for G_c = 1 (owned + ghost)
+  int ncrit = 0;
+  pd_law_energy params;
+};
+
+}    // namespace
+
+PDFailureLaw *LAMMPS_NS::pd_make_law_energy(PairPD *pair, pd_fail_law id)
+{
+  return new LawEnergy(pair, id);
+}

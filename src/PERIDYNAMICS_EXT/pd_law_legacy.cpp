@@ -1,0 +1,91 @@
+/* ----------------------------------------------------------------------
+   PERIDYNAMICS_EXT: 'fail legacy <s00> <alpha>', LAMMPS PERI's rule in
+   legacy mode (the bond test: core/pd_law_legacy.h). Each atom carries its
+   s0 (atom->s0, as PERI): the largest s00 - alpha stretch over its intact
+   bonds of the previous step.
+------------------------------------------------------------------------- */
+
+#include "pd_failure_law.h"
+
+#include "atom.h"
+#include "error.h"
+#include "fix_pd_bonds.h"
+#include "memory.h"
+#include "pair_pd.h"
+
+#include <cfloat>
+#include <cmath>
+
+extern "C" {
+#include "pd_law_legacy.h"
+}
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+enum { S00, ALPHA };
+const pd_coef COEFS[] = {
+    // kept in the s0 column: between two types, the smaller
+    {"s0", "PERI's critical stretch", PD_MIX_MIN, PD_COEF_PAIR, PD_CHECK_FINITE, 0.0, 0.0, 0.0, "s00"},
+    {"alpha", "PERI's stretch factor", PD_MIX_MEAN, PD_COEF_PAIR, PD_CHECK_FINITE, 0.0, 0.0, 0.0, nullptr},
+};
+
+class LawLegacy : public PDFailureLaw {
+ public:
+  LawLegacy(PairPD *pair, pd_fail_law id) : PDFailureLaw(pair, id, "legacy", COEFS, 2) {}
+  ~LawLegacy() override { memory->destroy(s0_new); }
+
+  std::string usage() const override { return "fail legacy <s00> <alpha>"; }
+  // PERI drops broken bonds; its bonds break after their force acted, so
+  // no step is evaluated again with half forces
+  const char *no_recontact() const override { return "legacy PERI"; }
+  bool replays_fresh() const override { return false; }
+
+  int parse(PDCoefLine &line, int narg, char **arg, int iarg) override
+  {
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair {} coeff: 'fail legacy' needs s00 and alpha", style());
+    take(line, S00, arg[iarg]);
+    take(line, ALPHA, arg[iarg + 1]);
+    return iarg + 2;
+  }
+
+  void check(int i, int j) override
+  {
+    if (!legacy_mode())
+      error->all(FLERR, "Pair {} coeff {} {}: 'fail legacy' reproduces PERI and needs the 'legacy' "
+                 "pair style keyword", style(), i, j);
+  }
+
+  const void *evaluation() override
+  {
+    if (atom->nmax > nmax) {
+      nmax = atom->nmax;
+      memory->destroy(s0_new);
+      memory->create(s0_new, nmax, "pd/legacy:s0_new");
+    }
+    const int nall = atom->nlocal + atom->nghost;
+    for (int i = 0; i < nall; i++) s0_new[i] = -INFINITY;
+    params = {table(S00), table(ALPHA), atom->s0, s0_new};
+    return &params;
+  }
+
+  // each atom's s0 for the next step: PERI's max over its intact bonds
+  void after_evaluation() override
+  {
+    bonds()->max_to_owners(s0_new);
+    for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = std::isinf(s0_new[i]) ? DBL_MAX : s0_new[i];
+  }
+
+ private:
+  pd_law_legacy params;
+  double *s0_new = nullptr;    // per atom new s0 (owned + ghost)
+  int nmax = 0;
+};
+
+}    // namespace
+
+PDFailureLaw *LAMMPS_NS::pd_make_law_legacy(PairPD *pair, pd_fail_law id)
+{
+  return new LawLegacy(pair, id);
+}
