@@ -8,7 +8,7 @@
      - calibration once per run, per-atom state, the parameter struct of
        one evaluation and what follows the evaluation,
      - the properties the pair must respect, and its setup report line.
-   The registry (pd_failure_laws.cpp) makes one of each law for a pair
+   The registry (pd_failure_law.cpp) makes one of each law for a pair
    style, from the list in core/pd_laws.h. Every call is per setup or per
    evaluation, never per bond.
 ------------------------------------------------------------------------- */
