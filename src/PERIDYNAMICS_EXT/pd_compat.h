@@ -11,6 +11,10 @@
  * and one access that no release offers publicly: the sub-styles of pair
  * style hybrid (PairHybrid::nstyles/styles are protected in every release
  * from 29Sep2021 on), reached through pointers to members (pair_styles).
+ * Handled without a switch: the destructors of LAMMPS's classes may throw
+ * from 19Nov2024 on (Pointers::~Pointers() noexcept(false)), so a style's
+ * second base class must not declare a virtual destructor of its own (see
+ * PDFamilySource in pd_family_spec.h).
  * Tested against 29Sep2021, 2Aug2023 and 19Nov2024. */
 #ifndef LMP_PD_COMPAT_H
 #define LMP_PD_COMPAT_H

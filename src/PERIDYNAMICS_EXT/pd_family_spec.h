@@ -48,9 +48,16 @@ struct PDFamilySpec {
 // hybrid sub-styles (no list of style names).
 class PDFamilySource {
  public:
-  virtual ~PDFamilySource() = default;
   // the families this style asks for, as of its last init_style
   virtual PDFamilySpec family_spec() const = 0;
+
+ protected:
+  // Never deleted through this base (the style is deleted as a Pair), so no
+  // virtual destructor: a virtual one here would be overridden by the
+  // style's destructor, whose exception specification follows LAMMPS's
+  // (Pointers' destructor is noexcept(false) from 19Nov2024 on, noexcept
+  // before), and a noexcept(false) one cannot override a noexcept one.
+  ~PDFamilySource() = default;
 };
 
 // The source among the current pair style and its hybrid sub-styles, or
