@@ -40,10 +40,15 @@ struct PDCoefLine;
 // give those energies (bond-based bonds have no per-end state).
 class PDBondEnergies {
  public:
-  virtual ~PDBondEnergies() = default;
   virtual double family_norm(int i) const = 0;                 // N = d / m of atom i
   virtual double complete_family_volume(int type) const = 0;   // m of a complete family (setup)
   virtual pd_influence_kind influence_kind() const = 0;
+
+ protected:
+  // never deleted through this base: no virtual destructor, which the
+  // style's would have to override with LAMMPS's exception specification
+  // (see PDFamilySource in pd_family_spec.h)
+  ~PDBondEnergies() = default;
 };
 
 class PDFailureLaw : protected Pointers {
