@@ -15,6 +15,7 @@
 #include "modify.h"
 #include "neighbor.h"
 #include "pd_compat.h"
+#include "pd_error.h"
 #include "pd_failure_law.h"
 #include "update.h"
 
@@ -404,7 +405,7 @@ void PairPD::read_material_file(int narg, char **arg)
     }
   }
   MPI_Bcast(&len, 1, MPI_INT, 0, world);
-  if (len < 0) error->all(FLERR, "Pair {} coeff file: cannot open '{}'", style, arg[3]);
+  if (len < 0) pd_error_all(lmp, FLERR, fmt::format("Pair {} coeff file: cannot open '{}'", style, arg[3]));
   text.resize(len);
   MPI_Bcast(&text[0], len, MPI_CHAR, 0, world);
 
