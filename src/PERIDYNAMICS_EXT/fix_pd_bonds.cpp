@@ -479,16 +479,12 @@ pd_bond_view FixPDBonds::view() const
   return v;
 }
 
+// The rows of view(), with the partner tags and writable lengths the
+// fracture record needs.
 PDBondTable FixPDBonds::table() const
 {
-  PDBondTable t;
-  t.nowned = nowned;
-  t.stride = maxpartner;
-  t.count = npartner;
-  t.partner = partner ? partner[0] : nullptr;
-  t.len0 = r0 ? r0[0] : nullptr;
-  t.far = far ? far[0] : nullptr;
-  return t;
+  const pd_bond_view v = view();
+  return {v.nowner, v.stride, v.count, partner ? partner[0] : nullptr, r0 ? r0[0] : nullptr, v.far};
 }
 
 double FixPDBonds::compute_scalar()
