@@ -419,8 +419,16 @@ void PairPD::read_material_file(int narg, char **arg)
     if (pd_material_find(text.c_str(), name, &mat, err, sizeof err))
       error->all(FLERR, "Pair {} coeff file '{}': {}", style, arg[3], err);
     std::vector<double> values(decl.size(), NAN);
-    for (size_t p = 0; p < decl.size(); p++)
-      if (decl[p].flags & PD_COEF_FILE) values[p] = pd_material_get(&mat, decl[p].name);
+    std::string skipped;
+    for (size_t p = 0; p < decl.size(); p++) {
+      if (!(decl[p].flags & PD_COEF_FILE)) continue;
+      const double v = pd_material_get(&mat, decl[p].name);
+      if (!std::isnan(v) && !uses_coefficient(p)) skipped += std::string(" ") + decl[p].name;
+      else values[p] = v;
+    }
+    if (!skipped.empty() && comm->me == 0)
+      utils::logmesg(lmp, "{} coeff file: material {} (type {}): not used by these settings:{}\n", style,
+                     name, t, skipped);
     set_coeff_pairs(t, t, t, t, parse_values(narg, arg, iarg, values));
   }
 }
@@ -782,6 +790,16 @@ void PairPD::declare_fields()
 {
   field_id.clear();
   for (const PDField &f : per_atom_fields()) field_id.push_back(bonds->add_field(f));
+}
+
+std::vector<double> PairPD::complete_family_volumes() const
+{
+  const int n = atom->ntypes + 1;
+  std::vector<double> mine(n, 0.0), all(n, 0.0);
+  for (int i = 0; i < atom->nlocal; i++)
+    mine[atom->type[i]] = MAX(mine[atom->type[i]], bonds->weighted_volume()[i]);
+  MPI_Allreduce(mine.data(), all.data(), n, MPI_DOUBLE, MPI_MAX, world);
+  return all;
 }
 
 void PairPD::grow_work()

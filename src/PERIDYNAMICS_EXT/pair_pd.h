@@ -105,6 +105,10 @@ class PairPD : public Pair, public PDFamilySource {
   virtual int parse_setting(int narg, char **arg, int iarg);    // returns args used, 0 if unknown
   virtual int parse_model(const char *) { return 0; }           // leading model word in pair_coeff
   virtual void check_coeff(int i, int j) = 0;                   // complete/validate one pair
+  // whether the style's settings use coefficient column p (a material file
+  // may hold more constants than a model needs: those are skipped, named
+  // in the log)
+  virtual bool uses_coefficient(int) const { return true; }
   virtual int uses_weights() const { return legacy; }
   // quadrature weight of a new bond (used only when uses_weights()), as a
   // function holding copies of the settings it needs
@@ -138,6 +142,9 @@ class PairPD : public Pair, public PDFamilySource {
   std::string law_usages(int col) const;           // the laws that take column col, for messages
   void select_law();
   void grow_work();
+  // per type: the weighted volume of a complete family, the largest over
+  // the type's atoms (an interior atom's); 0 for a type without atoms
+  std::vector<double> complete_family_volumes() const;
   void declare_fields();
   void tally(const pd_tally &t);
   void report_setup();

@@ -17,6 +17,7 @@
 #include "memory.h"
 #include "neighbor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -155,10 +156,8 @@ void PairPDOrdinary::setup_run()
   memory->create(bulk_volume, ntypes + 1, "pair:bulk_volume");
   memory->create(lambda_bar, ntypes + 1, "pair:lambda_bar");
   memory->create(mu_bar, ntypes + 1, "pair:mu_bar");
-  std::vector<double> mine(ntypes + 1, 0.0);
-  for (int i = 0; i < atom->nlocal; i++)
-    mine[atom->type[i]] = MAX(mine[atom->type[i]], bonds->weighted_volume()[i]);
-  MPI_Allreduce(mine.data(), bulk_volume, ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+  const std::vector<double> complete = complete_family_volumes();
+  std::copy(complete.begin(), complete.end(), bulk_volume);
   for (int t = 1; t <= ntypes; t++) {
     pd_elastic m;
     pd_elastic_from_K_G(coef[PD_ORD_K][t][t], coef[PD_ORD_G][t][t], &m);

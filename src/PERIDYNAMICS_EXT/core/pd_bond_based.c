@@ -34,7 +34,7 @@ static inline pd_bond_force pmb_bond(double c, double s, const pd_bond *bd)
 {
   const double t = c * s * bd->w;
   const double e = 0.25 * t * s * bd->r0;
-  const pd_bond_force bf = {t, e, e, e, e};
+  const pd_bond_force bf = {t, e, e, e, e, {0.0, 0.0, 0.0}};
   return bf;
 }
 

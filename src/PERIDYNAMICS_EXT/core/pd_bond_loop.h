@@ -65,7 +65,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                  const double *restrict x, const double *restrict vol, double *restrict f,
                  pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                  pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-                 int weighted, int tallied, int failing)
+                 int weighted, int tallied, int failing, int directed)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   pd_bond bd;
@@ -96,10 +96,13 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
         pd_break_bond(fail, &sums, &bd, bf.release_i, bf.release_j, vi, vj, 1);
         share = 0.5;
       }
-      const double tl = bd.len > 0.0 ? share * bf.t / bd.len : 0.0;
+      /* the force on i per V_i V_j */
+      double fij[3];
+      const double tl = directed || bd.len <= 0.0 ? 0.0 : share * bf.t / bd.len;
+      for (int c = 0; c < 3; c++) fij[c] = directed ? share * bf.v[c] : tl * bd.d[c];
       for (int c = 0; c < 3; c++) {
-        fi[c] += vj * tl * bd.d[c];
-        f[3 * j + c] -= vi * tl * bd.d[c];
+        fi[c] += vj * fij[c];
+        f[3 * j + c] -= vi * fij[c];
       }
       if (tallied) {
         /* a breaking bond's energy is booked as dissipated instead */
@@ -110,7 +113,12 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
           tally->eatom[j] += ej * vi;
         }
         const double dij[3] = {-bd.d[0], -bd.d[1], -bd.d[2]};
-        pd_tally_virial(tally, dij, -tl * vi * vj);
+        if (directed) {
+          const double fv[3] = {vi * vj * fij[0], vi * vj * fij[1], vi * vj * fij[2]};
+          pd_tally_virial_pair(tally, dij, fv);
+        } else {
+          pd_tally_virial(tally, dij, -tl * vi * vj);
+        }
       }
       if (failing && !bd.broken && breaks_after(fail, &bd, eps))
         pd_break_bond(fail, &sums, &bd, bf.release_i, bf.release_j, vi, vj, 0);
@@ -123,41 +131,46 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
 PD_INLINE void
 pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn force,
               pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after, int weighted,
-              int tallied, int failing)
+              int tallied, int failing, int directed)
 {
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->tally, L->fail, mat, strain,
-                   force, breaks_now, breaks_after, weighted, tallied, failing);
+                   force, breaks_now, breaks_after, weighted, tallied, failing, directed);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */
 typedef void (*pd_kernel)(const pd_loop *L, void *mat);
 
-#define PD_KERNEL_(prefix, strain, force, law, failing, weighted, tallied)               \
+#define PD_KERNEL_(prefix, strain, force, law, failing, weighted, tallied, directed)     \
   static void prefix##_##law##_##failing##weighted##tallied(const pd_loop *L, void *mat) \
   {                                                                                       \
     pd_force_loop(L, mat, strain, force, pd_law_##law##_now, pd_law_##law##_after,        \
-                  weighted, tallied, failing);                                            \
+                  weighted, tallied, failing, directed);                                  \
   }
-#define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing) \
-  PD_KERNEL_(prefix, strain, force, law, failing, 0, 0)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 0, 1)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 1, 0)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 1, 1)
+#define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing, directed) \
+  PD_KERNEL_(prefix, strain, force, law, failing, 0, 0, directed)             \
+  PD_KERNEL_(prefix, strain, force, law, failing, 0, 1, directed)             \
+  PD_KERNEL_(prefix, strain, force, law, failing, 1, 0, directed)             \
+  PD_KERNEL_(prefix, strain, force, law, failing, 1, 1, directed)
 #define PD_KERNEL_ROW_(ID, law, prefix, failing)                                      \
   {prefix##_##law##_##failing##00, prefix##_##law##_##failing##01,                    \
    prefix##_##law##_##failing##10, prefix##_##law##_##failing##11},
-#define PD_FAILING_KERNELS_(ID, law, prefix, strain, force) \
-  PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, 1)
+#define PD_FAILING_KERNELS_(ID, law, prefix, strain, force, directed) \
+  PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, 1, directed)
 #define PD_FAILING_ROW_(ID, law, prefix) PD_KERNEL_ROW_(ID, law, prefix, 1)
 
 /* Defines prefix_kernels: row 0 for intact bonds only (nothing can be or
  * become broken), then one row per failure law of pd_laws.h; in each row
  * the four combinations of weights and tally. */
-#define PD_DEFINE_KERNELS(prefix, strain, force)                                      \
-  PD_KERNELS_OF_LAW_(NONE, none, prefix, strain, force, 0)                            \
-  PD_FAILURE_LAWS(PD_FAILING_KERNELS_, prefix, strain, force)                         \
+#define PD_DEFINE_KERNELS_(prefix, strain, force, directed)                           \
+  PD_KERNELS_OF_LAW_(NONE, none, prefix, strain, force, 0, directed)                  \
+  PD_FAILURE_LAWS(PD_FAILING_KERNELS_, prefix, strain, force, directed)               \
   static const pd_kernel prefix##_kernels[PD_NLAWS + 1][4] = {                       \
       PD_KERNEL_ROW_(NONE, none, prefix, 0) PD_FAILURE_LAWS(PD_FAILING_ROW_, prefix)};
+#define PD_DEFINE_KERNELS(prefix, strain, force) PD_DEFINE_KERNELS_(prefix, strain, force, 0)
+/* The same for a material whose bond force is not along the bond (its
+ * force hook fills pd_bond_force.v): the classical correspondence. */
+#define PD_DEFINE_DIRECTED_KERNELS(prefix, strain, force) \
+  PD_DEFINE_KERNELS_(prefix, strain, force, 1)
 
 /* Run the kernel of a table that L asks for: its failure law (or none),
  * weights when the bond view has them, tally when L has one. */
@@ -196,14 +209,15 @@ pd_reference_sums(const pd_bond_view *restrict b, const int *type, int ntypes,
 }
 
 /* The same in the current configuration, over the bonds that act (a broken
- * bond only in compression, with recontact): (a, b) = value(ctx, bond,
- * strain). A state-based material's first pass (dilatation); types are
- * not loaded. */
-typedef void (*pd_bond_strain_value_fn)(void *ctx, const pd_bond *bd, double eps, double *a,
-                                        double *b);
+ * bond only in compression, with recontact): value(ctx, bond, strain, t)
+ * gives 'width' numbers t, added as t V_j onto sum[i * width ..] and t V_i
+ * onto sum[j * width ..]. A state-based material's first pass (dilatation,
+ * deformation gradient); types are not loaded. */
+enum { PD_MAX_SUM_WIDTH = 48 };
+typedef void (*pd_bond_strain_value_fn)(void *ctx, const pd_bond *bd, double eps, double *t);
 
 PD_INLINE void
-pd_current_sums(const pd_loop *L, double *restrict sum, void *mat, pd_strain_fn strain,
+pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd_strain_fn strain,
                 pd_bond_strain_value_fn value, int failing)
 {
   const pd_bond_view *restrict b = L->b;
@@ -213,18 +227,21 @@ pd_current_sums(const pd_loop *L, double *restrict sum, void *mat, pd_strain_fn 
     const int row = i * b->stride;
     bd.i = i;
     bd.ti = 0;
-    double si = 0.0;
+    double si[PD_MAX_SUM_WIDTH], t[PD_MAX_SUM_WIDTH];
+    for (int c = 0; c < width; c++) si[c] = 0.0;
     const double xi[3] = {L->x[3 * i], L->x[3 * i + 1], L->x[3 * i + 2]};
     for (int k = 0; k < b->count[i]; k++) {
       pd_bond_load(&bd, b, NULL, 0, L->x, xi, L->fail, row + k, b->weight != NULL, failing, 1);
       const double eps = strain(mat, &bd);
       if (failing && pd_bond_inactive(L->fail, bd.broken, eps)) continue;
-      double a, c;
-      value(mat, &bd, eps, &a, &c);
-      si += a * vol[bd.j];
-      sum[bd.j] += c * vol[i];
+      value(mat, &bd, eps, t);
+      const double vj = vol[bd.j], vi = vol[i];
+      for (int c = 0; c < width; c++) {
+        si[c] += t[c] * vj;
+        sum[bd.j * width + c] += t[c] * vi;
+      }
     }
-    sum[i] += si;
+    for (int c = 0; c < width; c++) sum[i * width + c] += si[c];
   }
 }
 

@@ -37,6 +37,8 @@ typedef struct pd_bond_force {
   double stored_i, stored_j;   /* energy density it stores at each end, per
                                   unit volume of the partner (tallied) */
   double release_i, release_j; /* what it releases at each end if it breaks now */
+  double v[3];                 /* a directed material's force instead of t (not
+                                  along the bond): f_i += V_j v, f_j -= V_i v */
 } pd_bond_force;
 
 /* Weighted volume over every bond, at both ends: m_i += w V_j, m_j += w V_i
@@ -66,6 +68,18 @@ static inline void pd_tally_virial(pd_tally *t, const double d[3], double fpair)
   t->virial[3] += d[0] * d[1] * fpair;
   t->virial[4] += d[0] * d[2] * fpair;
   t->virial[5] += d[1] * d[2] * fpair;
+}
+
+/* Add a bond's virial for a force fv on i (not necessarily along d =
+ * x_i - x_j): the symmetric part of d (x) fv. */
+static inline void pd_tally_virial_pair(pd_tally *t, const double d[3], const double fv[3])
+{
+  t->virial[0] += d[0] * fv[0];
+  t->virial[1] += d[1] * fv[1];
+  t->virial[2] += d[2] * fv[2];
+  t->virial[3] += 0.5 * (d[0] * fv[1] + d[1] * fv[0]);
+  t->virial[4] += 0.5 * (d[0] * fv[2] + d[2] * fv[0]);
+  t->virial[5] += 0.5 * (d[1] * fv[2] + d[2] * fv[1]);
 }
 
 #endif

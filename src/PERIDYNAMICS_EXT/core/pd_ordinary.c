@@ -2,6 +2,7 @@
 #include "pd_ordinary.h"
 
 #include "pd_bond_loop.h"
+#include "pd_seth_hill.h"
 
 #include <math.h>
 
@@ -22,27 +23,6 @@ const pd_coef pd_ordinary_coefs[PD_ORD_NCOEFS] = {
                   .hi = 1.0, .value = 0.5},
 };
 
-/* Strain of order m as a function of the length ratio, in three forms so
- * the common orders pay for no pow(): m = 1/2 (LPS stretch), m = 0 (log). */
-enum { ORDER_HALF, ORDER_LOG, ORDER_ANY };
-
-PD_INLINE double
-bond_strain(int kind, double m, const pd_bond *bd)
-{
-  if (kind == ORDER_HALF) return (bd->len - bd->r0) / bd->r0;
-  if (kind == ORDER_LOG) return log(bd->len / bd->r0);
-  return expm1(2.0 * m * log(bd->len / bd->r0)) / (2.0 * m);
-}
-
-/* d eps / d|Y| = c^(m-1) |Y| / |xi|^2 = (1 + 2 m eps) / |Y|. */
-PD_INLINE double
-bond_strain_rate(int kind, double m, double eps, const pd_bond *bd)
-{
-  if (kind == ORDER_HALF) return 1.0 / bd->r0;
-  if (kind == ORDER_LOG) return 1.0 / bd->len;
-  return (1.0 + 2.0 * m * eps) / bd->len;
-}
-
 /* t = (A_i + A_j + (B_i + B_j) eps) w d(eps)/d|Y|; stored B/2 w eps^2 and
  * released w eps (A + B eps / 2) at each end, per partner volume */
 PD_INLINE pd_bond_force
@@ -53,7 +33,7 @@ ordinary_bond(int kind, const pd_ordinary_state *st, const pd_bond *bd, double e
   const double aj = ab[2 * bd->j], bj = ab[2 * bd->j + 1];
   const double w = bd->w, we2 = 0.5 * w * eps * eps;
   pd_bond_force bf;
-  bf.t = (ai + aj + (bi + bj) * eps) * w * bond_strain_rate(kind, st->order, eps, bd);
+  bf.t = (ai + aj + (bi + bj) * eps) * w * pd_bond_strain_rate(kind, st->order, eps, bd);
   bf.stored_i = we2 * bi;
   bf.stored_j = we2 * bj;
   bf.release_i = w * eps * (ai + 0.5 * bi * eps);
@@ -65,15 +45,15 @@ ordinary_bond(int kind, const pd_ordinary_state *st, const pd_bond *bd, double e
 #define ORDER_HOOKS(KIND, name)                                                           \
   static inline double strain_##name(void *st, const pd_bond *bd)                         \
   {                                                                                       \
-    return bond_strain(KIND, ((const pd_ordinary_state *) st)->order, bd);                \
+    return pd_bond_strain(KIND, ((const pd_ordinary_state *) st)->order, bd);                \
   }                                                                                       \
   static inline pd_bond_force force_##name(void *st, const pd_bond *bd, double eps)       \
   {                                                                                       \
     return ordinary_bond(KIND, (const pd_ordinary_state *) st, bd, eps);                  \
   }
-ORDER_HOOKS(ORDER_HALF, half)
-ORDER_HOOKS(ORDER_LOG, log)
-ORDER_HOOKS(ORDER_ANY, any)
+ORDER_HOOKS(PD_ORDER_HALF, half)
+ORDER_HOOKS(PD_ORDER_LOG, log)
+ORDER_HOOKS(PD_ORDER_ANY, any)
 
 /* m != 1/2: the dilatation pass stores each bond's strain, the force pass
  * reads it back (one log per bond). */
@@ -81,10 +61,10 @@ ORDER_HOOKS(ORDER_ANY, any)
   static inline double strain_##name##_stored(void *st, const pd_bond *bd)                \
   {                                                                                       \
     const pd_ordinary_state *s = (const pd_ordinary_state *) st;                          \
-    return s->strain[bd->idx] = bond_strain(KIND, s->order, bd);                          \
+    return s->strain[bd->idx] = pd_bond_strain(KIND, s->order, bd);                          \
   }
-STORED_STRAIN_HOOK(ORDER_LOG, log)
-STORED_STRAIN_HOOK(ORDER_ANY, any)
+STORED_STRAIN_HOOK(PD_ORDER_LOG, log)
+STORED_STRAIN_HOOK(PD_ORDER_ANY, any)
 
 static inline double strain_cached(void *st, const pd_bond *bd)
 {
@@ -97,43 +77,37 @@ PD_DEFINE_KERNELS(log_cached, strain_cached, force_log)
 PD_DEFINE_KERNELS(any_computed, strain_any, force_any)
 PD_DEFINE_KERNELS(any_cached, strain_cached, force_any)
 
-static int order_kind(double m)
-{
-  if (m == 0.5) return ORDER_HALF;
-  if (m == 0.0) return ORDER_LOG;
-  return ORDER_ANY;
-}
 
 void pd_ordinary_forces(const pd_loop *L, const pd_ordinary_state *st)
 {
-  const int kind = order_kind(st->order), cached = st->strain != NULL;
-  const pd_kernel (*table)[4] = kind == ORDER_HALF ? half_kernels
-      : kind == ORDER_LOG ? (cached ? log_cached_kernels : log_computed_kernels)
+  const int kind = pd_order_kind(st->order), cached = st->strain != NULL;
+  const pd_kernel (*table)[4] = kind == PD_ORDER_HALF ? half_kernels
+      : kind == PD_ORDER_LOG ? (cached ? log_cached_kernels : log_computed_kernels)
                           : (cached ? any_cached_kernels : any_computed_kernels);
   pd_run_kernel(table, L, (void *) st);
 }
 
-static inline void weighted_strain(void *st, const pd_bond *bd, double eps, double *a, double *b)
+static inline void weighted_strain(void *st, const pd_bond *bd, double eps, double *t)
 {
   (void) st;
-  *a = *b = bd->w * eps;
+  *t = bd->w * eps;
 }
 
-#define DILATATION(strain, failing) pd_current_sums(L, st->sum, (void *) st, strain, weighted_strain, failing)
+#define DILATATION(strain, failing) pd_current_sums(L, st->sum, 1, (void *) st, strain, weighted_strain, failing)
 
 void pd_ordinary_dilatation(const pd_loop *L, const pd_ordinary_state *st)
 {
-  const int kind = order_kind(st->order), stored = st->strain != NULL && kind != ORDER_HALF;
+  const int kind = pd_order_kind(st->order), stored = st->strain != NULL && kind != PD_ORDER_HALF;
   switch ((kind * 2 + stored) * 2 + (L->fail != NULL)) {
-  case (ORDER_HALF * 2) * 2: DILATATION(strain_half, 0); break;
-  case (ORDER_HALF * 2) * 2 + 1: DILATATION(strain_half, 1); break;
-  case (ORDER_LOG * 2) * 2: DILATATION(strain_log, 0); break;
-  case (ORDER_LOG * 2) * 2 + 1: DILATATION(strain_log, 1); break;
-  case (ORDER_LOG * 2 + 1) * 2: DILATATION(strain_log_stored, 0); break;
-  case (ORDER_LOG * 2 + 1) * 2 + 1: DILATATION(strain_log_stored, 1); break;
-  case (ORDER_ANY * 2) * 2: DILATATION(strain_any, 0); break;
-  case (ORDER_ANY * 2) * 2 + 1: DILATATION(strain_any, 1); break;
-  case (ORDER_ANY * 2 + 1) * 2: DILATATION(strain_any_stored, 0); break;
+  case (PD_ORDER_HALF * 2) * 2: DILATATION(strain_half, 0); break;
+  case (PD_ORDER_HALF * 2) * 2 + 1: DILATATION(strain_half, 1); break;
+  case (PD_ORDER_LOG * 2) * 2: DILATATION(strain_log, 0); break;
+  case (PD_ORDER_LOG * 2) * 2 + 1: DILATATION(strain_log, 1); break;
+  case (PD_ORDER_LOG * 2 + 1) * 2: DILATATION(strain_log_stored, 0); break;
+  case (PD_ORDER_LOG * 2 + 1) * 2 + 1: DILATATION(strain_log_stored, 1); break;
+  case (PD_ORDER_ANY * 2) * 2: DILATATION(strain_any, 0); break;
+  case (PD_ORDER_ANY * 2) * 2 + 1: DILATATION(strain_any, 1); break;
+  case (PD_ORDER_ANY * 2 + 1) * 2: DILATATION(strain_any_stored, 0); break;
   default: DILATATION(strain_any_stored, 1); break;
   }
 }

@@ -1,0 +1,307 @@
+/* The correspondence material: its sums, bond forces and per-atom step. */
+#include "pd_corr.h"
+
+#include "pd_bond_loop.h"
+#include "pd_seth_hill.h"
+#include "pd_tensor.h"
+
+#include <math.h>
+#include <string.h>
+
+#define MODULUS(key, what) \
+  [key] = {.name = #key, .what = what, .mix = PD_MIX_OWN, .flags = PD_COEF_FILE, .check = PD_CHECK_POSITIVE}
+#define OWN(nm, wh, chk, lo_, hi_, def, fl)                                                  \
+  {.name = nm, .what = wh, .mix = PD_MIX_OWN, .flags = PD_COEF_FILE | (fl), .check = chk, .lo = lo_, \
+   .hi = hi_, .value = def}
+
+/* Each atom's stress uses its own type's material: every constant but the
+ * horizon is given on the type's own line (or its material file). */
+const pd_coef pd_corr_coefs[PD_CORR_NCOEFS] = {
+    [PD_CORR_HORIZON] = PD_COEF_HORIZON,
+    [PD_CORR_K] = OWN("K", "bulk modulus", PD_CHECK_POSITIVE, 0, 0, 0, 0),
+    [PD_CORR_G] = OWN("G", "shear modulus", PD_CHECK_POSITIVE, 0, 0, 0, 0),
+    [PD_CORR_E] = OWN("E", "Young's modulus", PD_CHECK_POSITIVE, 0, 0, 0, 0),
+    [PD_CORR_NU] = OWN("nu", "Poisson's ratio", PD_CHECK_FINITE, 0, 0, 0, 0),
+    /* Seth-Hill order of the strain the law works on; one for all types */
+    [PD_CORR_M] = OWN("m", "strain order", PD_CHECK_RANGE, -4.0, 1.0, 0.0, PD_COEF_DEFAULT),
+    [PD_CORR_YIELD] = OWN("yield", "initial yield stress", PD_CHECK_POSITIVE, 0, 0, 0, 0),
+    [PD_CORR_HARDENING] = OWN("hardening", "linear hardening modulus", PD_CHECK_RANGE, 0.0, HUGE_VAL, 0, 0),
+    [PD_CORR_JC_B] = OWN("jc_B", "Johnson-Cook hardening stress B", PD_CHECK_POSITIVE, 0, 0, 0, 0),
+    [PD_CORR_JC_N] = OWN("jc_n", "Johnson-Cook hardening exponent n", PD_CHECK_POSITIVE, 0, 0, 0, 0),
+    [PD_CORR_JC_C] = OWN("jc_C", "Johnson-Cook rate constant C", PD_CHECK_RANGE, 0.0, HUGE_VAL, 0.0,
+                         PD_COEF_DEFAULT),
+    [PD_CORR_JC_RATE0] = OWN("jc_rate0", "Johnson-Cook reference plastic strain rate",
+                             PD_CHECK_POSITIVE, 0, 0, 1.0, PD_COEF_DEFAULT),
+    [PD_CORR_T_ROOM] = OWN("T_room", "initial (room) temperature", PD_CHECK_POSITIVE, 0, 0, 293.15,
+                           PD_COEF_DEFAULT),
+    [PD_CORR_T_MELT] = OWN("T_melt", "melting temperature (gives thermal softening)",
+                           PD_CHECK_POSITIVE, 0, 0, 0, 0),
+    [PD_CORR_T_EXP] = OWN("T_exp", "thermal softening exponent", PD_CHECK_POSITIVE, 0, 0, 1.0,
+                          PD_COEF_DEFAULT),
+    [PD_CORR_HEAT_CAPACITY] = OWN("heat_capacity", "specific heat capacity", PD_CHECK_POSITIVE, 0, 0,
+                                  0, 0),
+    [PD_CORR_TAYLOR_QUINNEY] = OWN("taylor_quinney", "fraction of plastic work turned into heat",
+                                   PD_CHECK_RANGE, 0.0, 1.0, 0.9, PD_COEF_DEFAULT),
+    [PD_CORR_D1] = OWN("d1", "Johnson-Cook damage d1 (gives damage)", PD_CHECK_FINITE, 0, 0, 0, 0),
+    [PD_CORR_D2] = OWN("d2", "Johnson-Cook damage d2", PD_CHECK_FINITE, 0, 0, 0.0, PD_COEF_DEFAULT),
+    [PD_CORR_D3] = OWN("d3", "Johnson-Cook damage d3", PD_CHECK_FINITE, 0, 0, 0.0, PD_COEF_DEFAULT),
+    [PD_CORR_D4] = OWN("d4", "Johnson-Cook damage d4", PD_CHECK_FINITE, 0, 0, 0.0, PD_COEF_DEFAULT),
+    [PD_CORR_D5] = OWN("d5", "Johnson-Cook damage d5", PD_CHECK_FINITE, 0, 0, 0.0, PD_COEF_DEFAULT),
+    [PD_CORR_DC] = OWN("Dc", "critical damage (bonds stop acting beyond it)", PD_CHECK_RANGE, 0.0,
+                       1.0, 0.99, PD_COEF_DEFAULT),
+};
+
+/* ---- per bond ---------------------------------------------------------- */
+
+/* A bond counts (in the sums) and acts unless an end's damage is beyond D_c
+ * (T14 eq. 7.2). */
+PD_INLINE int
+alive(const pd_corr_state *st, const pd_bond *bd, int damaged)
+{
+  return !damaged || (st->damage[bd->i] <= st->damage_max && st->damage[bd->j] <= st->damage_max);
+}
+
+/* The first pass's sums of one bond, the same at both ends. */
+PD_INLINE void
+bond_sums(void *s, const pd_bond *bd, double eps, double *t, int extended, int damaged)
+{
+  const pd_corr_state *st = (const pd_corr_state *) s;
+  const double *xi = st->xi + 3 * bd->idx;
+  const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
+  if (bd->broken || !alive(st, bd, damaged)) {
+    for (int c = 0; c < width; c++) t[c] = 0.0;
+    return;
+  }
+  const double w = bd->w;
+  t[0] = w * xi[0] * xi[0], t[1] = w * xi[1] * xi[1], t[2] = w * xi[2] * xi[2];
+  t[3] = w * xi[0] * xi[1], t[4] = w * xi[0] * xi[2], t[5] = w * xi[1] * xi[2];
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) t[6 + 3 * r + c] = w * bd->d[r] * xi[c];
+  if (!extended) return;
+  const double n[3] = {xi[0] / bd->r0, xi[1] / bd->r0, xi[2] / bd->r0};
+  const double we = w * eps;
+  t[15] = we * n[0] * n[0], t[16] = we * n[1] * n[1], t[17] = we * n[2] * n[2];
+  t[18] = we * n[0] * n[1], t[19] = we * n[0] * n[2], t[20] = we * n[1] * n[2];
+  for (int c = 21; c < 42; c++) t[c] = 0.0;
+  pd_sym4_add_dyad(t + 21, n, w);
+}
+
+/* n . S . n for a symmetric S (first six of a per-atom tensor) */
+PD_INLINE double
+normal_component(const double *s, const double n[3])
+{
+  return s[0] * n[0] * n[0] + s[1] * n[1] * n[1] + s[2] * n[2] * n[2] +
+      2.0 * (s[3] * n[0] * n[1] + s[4] * n[0] * n[2] + s[5] * n[1] * n[2]);
+}
+
+/* A broken bond in contact (recontact) pushes as a bond-based spring. */
+PD_INLINE pd_bond_force
+contact_spring(const pd_corr_state *st, const pd_bond *bd, int directed)
+{
+  pd_bond_force bf = {0};
+  const double t = st->spring[bd->tij] * (bd->len - bd->r0) / bd->r0;
+  if (!directed) bf.t = t;
+  else if (bd->len > 0.0)
+    for (int c = 0; c < 3; c++) bf.v[c] = t * bd->d[c] / bd->len;
+  return bf;
+}
+
+PD_INLINE pd_bond_force
+classical_force(const pd_corr_state *st, const pd_bond *bd, int damaged)
+{
+  if (bd->broken) return contact_spring(st, bd, 1);
+  pd_bond_force bf = {0};
+  if (!alive(st, bd, damaged)) return bf;
+  const double *xi = st->xi + 3 * bd->idx;
+  const double *ai = st->tensor + 9 * bd->i, *aj = st->tensor + 9 * bd->j;
+  for (int r = 0; r < 3; r++)
+    bf.v[r] = bd->w * ((ai[3 * r] + aj[3 * r]) * xi[0] + (ai[3 * r + 1] + aj[3 * r + 1]) * xi[1] +
+                       (ai[3 * r + 2] + aj[3 * r + 2]) * xi[2]);
+  if (st->stabilization > 0.0 && bd->len > 0.0) {
+    /* the non-affine part of the bond along it: (Y - F_avg xi) . e */
+    const double *fi = st->defgrad + 9 * bd->i, *fj = st->defgrad + 9 * bd->j;
+    double z = 0.0;
+    for (int r = 0; r < 3; r++) {
+      const double fxi = 0.5 * ((fi[3 * r] + fj[3 * r]) * xi[0] + (fi[3 * r + 1] + fj[3 * r + 1]) * xi[1] +
+                                (fi[3 * r + 2] + fj[3 * r + 2]) * xi[2]);
+      z += (bd->d[r] - fxi) * bd->d[r];
+    }
+    const double t = st->stabilization * st->spring[bd->tij] * z / (bd->len * bd->len * bd->r0);
+    for (int r = 0; r < 3; r++) bf.v[r] += t * bd->d[r];
+  }
+  return bf;
+}
+
+PD_INLINE pd_bond_force
+extended_force(const pd_corr_state *st, const pd_bond *bd, double eps, int kind, int damaged)
+{
+  if (bd->broken) return contact_spring(st, bd, 0);
+  pd_bond_force bf = {0};
+  if (!alive(st, bd, damaged)) return bf;
+  const double *xi = st->xi + 3 * bd->idx;
+  const double n[3] = {xi[0] / bd->r0, xi[1] / bd->r0, xi[2] / bd->r0};
+  const double si = normal_component(st->tensor + 9 * bd->i, n);
+  const double sj = normal_component(st->tensor + 9 * bd->j, n);
+  bf.t = bd->w * (si + sj) * pd_bond_strain_rate(kind, st->order, eps, bd);
+  /* the instantaneous bond energy d psi / d phi at each end ('fail energy') */
+  bf.release_i = bd->w * eps * si;
+  bf.release_j = bd->w * eps * sj;
+  return bf;
+}
+
+/* ---- hooks and kernels: classical, extended (log, any m) x damage ------- */
+
+static inline double stretch(void *st, const pd_bond *bd)
+{
+  (void) st;
+  return (bd->len - bd->r0) / bd->r0;
+}
+static inline double strain_log(void *st, const pd_bond *bd)
+{
+  return pd_bond_strain(PD_ORDER_LOG, ((const pd_corr_state *) st)->order, bd);
+}
+static inline double strain_any(void *st, const pd_bond *bd)
+{
+  return pd_bond_strain(PD_ORDER_ANY, ((const pd_corr_state *) st)->order, bd);
+}
+
+#define CORR_HOOKS(name, DAMAGED)                                                                  \
+  static inline pd_bond_force classical_##name(void *st, const pd_bond *bd, double eps)            \
+  {                                                                                                \
+    (void) eps;                                                                                    \
+    return classical_force((const pd_corr_state *) st, bd, DAMAGED);                               \
+  }                                                                                                \
+  static inline pd_bond_force log_##name(void *st, const pd_bond *bd, double eps)                  \
+  {                                                                                                \
+    return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_LOG, DAMAGED);             \
+  }                                                                                                \
+  static inline pd_bond_force any_##name(void *st, const pd_bond *bd, double eps)                  \
+  {                                                                                                \
+    return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_ANY, DAMAGED);             \
+  }                                                                                                \
+  static inline void classical_sums_##name(void *st, const pd_bond *bd, double eps, double *t)     \
+  {                                                                                                \
+    bond_sums(st, bd, eps, t, 0, DAMAGED);                                                         \
+  }                                                                                                \
+  static inline void extended_sums_##name(void *st, const pd_bond *bd, double eps, double *t)      \
+  {                                                                                                \
+    bond_sums(st, bd, eps, t, 1, DAMAGED);                                                         \
+  }
+CORR_HOOKS(intact, 0)
+CORR_HOOKS(damaged, 1)
+
+PD_DEFINE_DIRECTED_KERNELS(classical_intact, stretch, classical_intact)
+PD_DEFINE_DIRECTED_KERNELS(classical_damaged, stretch, classical_damaged)
+PD_DEFINE_KERNELS(log_intact, strain_log, log_intact)
+PD_DEFINE_KERNELS(log_damaged, strain_log, log_damaged)
+PD_DEFINE_KERNELS(any_intact, strain_any, any_intact)
+PD_DEFINE_KERNELS(any_damaged, strain_any, any_damaged)
+
+void pd_corr_forces(const pd_loop *L, const pd_corr_state *st)
+{
+  const int damaged = st->damage != NULL;
+  const pd_kernel (*table)[4];
+  if (!st->extended) table = damaged ? classical_damaged_kernels : classical_intact_kernels;
+  else if (st->order == 0.0) table = damaged ? log_damaged_kernels : log_intact_kernels;
+  else table = damaged ? any_damaged_kernels : any_intact_kernels;
+  pd_run_kernel(table, L, (void *) st);
+}
+
+#define SUMS(width, strain, value, failing) pd_current_sums(L, st->sum, width, (void *) st, strain, value, failing)
+
+void pd_corr_sums(const pd_loop *L, const pd_corr_state *st)
+{
+  const int failing = L->fail != NULL, damaged = st->damage != NULL;
+  const int which = ((st->extended ? (st->order == 0.0 ? 1 : 2) : 0) * 2 + damaged) * 2 + failing;
+  switch (which) {
+  case 0: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_intact, 0); break;
+  case 1: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_intact, 1); break;
+  case 2: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_damaged, 0); break;
+  case 3: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_damaged, 1); break;
+  case 4: SUMS(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_intact, 0); break;
+  case 5: SUMS(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_intact, 1); break;
+  case 6: SUMS(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_damaged, 0); break;
+  case 7: SUMS(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_damaged, 1); break;
+  case 8: SUMS(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_intact, 0); break;
+  case 9: SUMS(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_intact, 1); break;
+  case 10: SUMS(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_damaged, 0); break;
+  default: SUMS(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_damaged, 1); break;
+  }
+}
+
+/* ---- per atom ----------------------------------------------------------- */
+
+/* The strain of order m of C = F^T F; its principal frame in (c, q).
+ * C - 1 = H + H^T + H^T H with H = F - 1 keeps the digits of small strains. */
+static void lagrangian_strain(double m, const double F[9], double E[6], double c[3], double q[9])
+{
+  double H[9], HtH[9], excess[6], a[3], e[3];
+  for (int k = 0; k < 9; k++) H[k] = F[k] - (k % 4 == 0);
+  pd_mat_tmul(H, H, HtH);
+  for (int k = 0; k < 9; k++) HtH[k] += H[k] + H[3 * (k % 3) + k / 3];
+  pd_full_to_sym(HtH, excess);
+  pd_sym_eigen(excess, a, q);
+  for (int k = 0; k < 3; k++) {
+    c[k] = 1.0 + a[k];
+    e[k] = pd_seth_hill_excess(m, a[k]);
+  }
+  pd_sym_from_eigen(e, q, E);
+}
+
+int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const double *sum,
+                 pd_corr_history *h, double dt, double rho, pd_corr_atom_out *o)
+{
+  memset(o, 0, sizeof(*o));
+  double K[9], Kinv[9], N[9];
+  pd_sym_to_full(sum, K);
+  memcpy(N, sum + 6, sizeof(N));
+  if (st->dim == 2) {
+    /* a plane family: F_33 = 1 (the plane-strain kinematics; a plane
+     * stress law sets its own E_33), at the family's own scale */
+    K[8] = N[8] = 0.5 * (K[0] + K[4]);
+  }
+  const double scale = K[0] + K[4] + K[8], tiny = 1e-12 * scale * scale * scale;
+  if (!(fabs(pd_inverse3(K, Kinv, tiny)) > tiny)) return 0;
+  pd_mat_mul(N, Kinv, o->F);
+
+  double E[6], c[3], q[9];
+  double M[PD_SYM4];
+  if (st->extended) {
+    memcpy(M, sum + 21, sizeof(M));
+    if (!pd_sym4_invert(M, st->dim)) return 0;
+    pd_sym4_apply(M, sum + 15, E);
+  } else {
+    lagrangian_strain(st->order, o->F, E, c, q);
+  }
+  pd_corr_stress s;
+  if (!pd_corr_law_stress(mat, st->order, E, h, dt, rho, &s)) return -1;
+  o->energy = s.energy;
+
+  /* S for the Cauchy stress (and classical's P); the extended strain's
+   * principal frame stands in for C's */
+  double S[6], Sf[9], P[9];
+  if (st->extended) {
+    double e[3];
+    pd_sym_eigen(E, e, q);
+    for (int k = 0; k < 3; k++) c[k] = pd_seth_hill_inverse(st->order, e[k]);
+  }
+  pd_corr_second_pk(st->order, c, q, s.T, S);
+  pd_sym_to_full(S, Sf);
+  pd_mat_mul(o->F, Sf, P);
+  if (st->extended) {
+    double sigma[6];
+    pd_sym4_apply(M, s.T, sigma);
+    memcpy(o->tensor, sigma, sizeof(sigma));
+  } else {
+    pd_mat_mul(P, Kinv, o->tensor);
+    if (st->dim == 2) o->tensor[2] = o->tensor[5] = o->tensor[6] = o->tensor[7] = o->tensor[8] = 0.0;
+  }
+  const double J = pd_det3(o->F);
+  if (J > 0.0) {
+    double PFt[9];
+    pd_mat_mult(P, o->F, PFt);
+    pd_full_to_sym(PFt, o->stress);
+    for (int k = 0; k < 6; k++) o->stress[k] /= J;
+  }
+  return 1;
+}

@@ -1,0 +1,98 @@
+/* Correspondence material (pair_style pd/corr): a classical constitutive
+ * law (pd_corr_law.h) evaluated at each atom from a nonlocal strain.
+ *
+ * classical (T14 eq. 2.6-2.10): K = sum w xi (x) xi V, F = [sum w Y (x) xi V] K^-1;
+ *   the law's stress at F gives P and A = P K^-1 per atom; a bond's force
+ *   per V_i V_j is w (A_i + A_j) xi (not along the bond). Optional
+ *   stabilization: a central force G c ((Y - F_avg xi) . e)/|xi| on the
+ *   non-affine part of each bond (Littlewood 2010's hourglass control; c the
+ *   PMB micromodulus of the material, G the user's coefficient).
+ * extended (T14 eq. 4.3-4.7): E_m = M^-1 : sum w eps_m (n (x) n) V with
+ *   n = xi/|xi| and M = sum w (n (x) n) (x) (n (x) n) V, the family's
+ *   fourth moment. In the continuum (isotropic M, sum w V = d) M^-1 : n (x) n
+ *   is T14's H<xi> = (d+2)/2 n (x) n - 1/2 1 (3D 5/2, 2D 2); the discrete M
+ *   makes E_m exact for every uniform small strain on any lattice and at
+ *   free surfaces, and the log strain of any uniform dilatation at m = 0.
+ *   With Sigma = M^-1 : T per atom (T conjugate to E_m), a bond's force
+ *   state is t = w (n . (Sigma_i + Sigma_j) . n) d eps_m / d|Y| along the
+ *   bond (T14 eq. 4.7).
+ * Damage through the influence function (T14 eq. 7.1-7.2): a bond with an
+ * end whose damage exceeds D_c neither counts in the sums nor acts. */
+#ifndef PD_CORR_H
+#define PD_CORR_H
+
+#include "pd_coefs.h"
+#include "pd_corr_law.h"
+#include "pd_loop.h"
+
+/* The pair_coeff keywords of pair_style pd/corr (pd_corr_coefs). */
+enum {
+  PD_CORR_HORIZON,
+  PD_CORR_K,
+  PD_CORR_G,
+  PD_CORR_E,
+  PD_CORR_NU,
+  PD_CORR_M,
+  PD_CORR_YIELD,
+  PD_CORR_HARDENING,
+  PD_CORR_JC_B,
+  PD_CORR_JC_N,
+  PD_CORR_JC_C,
+  PD_CORR_JC_RATE0,
+  PD_CORR_T_ROOM,
+  PD_CORR_T_MELT,
+  PD_CORR_T_EXP,
+  PD_CORR_HEAT_CAPACITY,
+  PD_CORR_TAYLOR_QUINNEY,
+  PD_CORR_D1,
+  PD_CORR_D2,
+  PD_CORR_D3,
+  PD_CORR_D4,
+  PD_CORR_D5,
+  PD_CORR_DC,
+  PD_CORR_NCOEFS
+};
+extern const pd_coef pd_corr_coefs[PD_CORR_NCOEFS];
+
+/* The per-atom sums of the first pass: K (6, symmetric), N = sum w Y (x) xi V
+ * (9); extended adds G = sum w eps (n (x) n) V (6) and M (21). */
+enum { PD_CORR_SUMS_CLASSICAL = 15, PD_CORR_SUMS_EXTENDED = 42 };
+
+typedef struct pd_corr_state {
+  int extended;           /* 1: extended, 0: classical */
+  int dim;                /* 2 or 3 */
+  double order;           /* Seth-Hill order m of the strain */
+  const double *xi;       /* per bond, laid out as the bonds: the reference
+                             vector x0_j - x0_i (nearest image) */
+  double *sum;            /* per atom: the first pass's sums */
+  const double *tensor;   /* per atom, 9: A (classical) or Sigma (extended, 6) */
+  const double *defgrad;  /* per atom, 9: F (classical with stabilization) */
+  double stabilization;   /* G (classical), 0: none */
+  const double *spring;   /* per type pair: PMB micromodulus c (broken bonds
+                             in contact, stabilization) */
+  const double *damage;   /* per atom, or NULL: no damage */
+  double damage_max;      /* D_c */
+} pd_corr_state;
+
+/* First pass: the sums of every atom (owned + ghost; the caller zeroes
+ * st->sum, width PD_CORR_SUMS_*, and sums the ghosts' share onto owners). */
+void pd_corr_sums(const pd_loop *L, const pd_corr_state *st);
+
+/* Second pass: forces, and with a tally the virial (the energy is per atom:
+ * pd_corr_atom). */
+void pd_corr_forces(const pd_loop *L, const pd_corr_state *st);
+
+/* One atom: from its sums to its deformation gradient, strain, stress (the
+ * law advances h) and the tensor its bonds need. */
+typedef struct pd_corr_atom_out {
+  double F[9];
+  double tensor[9];   /* A = P K^-1 (classical) or Sigma = M^-1 : T (extended) */
+  double stress[6];   /* Cauchy stress */
+  double energy;      /* stored energy density */
+} pd_corr_atom_out;
+/* Returns 1; 0 when the family spans no volume (no bonds left: everything
+ * zero) and -1 when the law rejects the state (out undefined). */
+int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const double *sum,
+                 pd_corr_history *h, double dt, double rho, pd_corr_atom_out *out);
+
+#endif

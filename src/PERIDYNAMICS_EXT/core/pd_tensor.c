@@ -1,0 +1,207 @@
+/* Small tensor algebra for the correspondence material (pd_tensor.h). */
+#include "pd_tensor.h"
+
+#include <math.h>
+#include <string.h>
+
+/* full index of the symmetric components xx, yy, zz, xy, xz, yz */
+static const int SYM_ROW[6] = {0, 1, 2, 0, 0, 1};
+static const int SYM_COL[6] = {0, 1, 2, 1, 2, 2};
+
+void pd_sym_to_full(const double s[6], double a[9])
+{
+  for (int k = 0; k < 6; k++) a[3 * SYM_ROW[k] + SYM_COL[k]] = a[3 * SYM_COL[k] + SYM_ROW[k]] = s[k];
+}
+
+void pd_full_to_sym(const double a[9], double s[6])
+{
+  for (int k = 0; k < 6; k++)
+    s[k] = 0.5 * (a[3 * SYM_ROW[k] + SYM_COL[k]] + a[3 * SYM_COL[k] + SYM_ROW[k]]);
+}
+
+void pd_mat_mul(const double a[9], const double b[9], double c[9])
+{
+  for (int r = 0; r < 3; r++)
+    for (int k = 0; k < 3; k++)
+      c[3 * r + k] = a[3 * r] * b[k] + a[3 * r + 1] * b[3 + k] + a[3 * r + 2] * b[6 + k];
+}
+
+void pd_mat_tmul(const double a[9], const double b[9], double c[9])
+{
+  for (int r = 0; r < 3; r++)
+    for (int k = 0; k < 3; k++) c[3 * r + k] = a[r] * b[k] + a[3 + r] * b[3 + k] + a[6 + r] * b[6 + k];
+}
+
+void pd_mat_mult(const double a[9], const double b[9], double c[9])
+{
+  for (int r = 0; r < 3; r++)
+    for (int k = 0; k < 3; k++)
+      c[3 * r + k] = a[3 * r] * b[3 * k] + a[3 * r + 1] * b[3 * k + 1] + a[3 * r + 2] * b[3 * k + 2];
+}
+
+double pd_det3(const double a[9])
+{
+  return a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
+      a[2] * (a[3] * a[7] - a[4] * a[6]);
+}
+
+double pd_inverse3(const double a[9], double inv[9], double tiny)
+{
+  const double det = pd_det3(a);
+  if (!(fabs(det) > tiny)) {
+    memset(inv, 0, 9 * sizeof(double));
+    return det;
+  }
+  const double r = 1.0 / det;
+  inv[0] = (a[4] * a[8] - a[5] * a[7]) * r;
+  inv[1] = (a[2] * a[7] - a[1] * a[8]) * r;
+  inv[2] = (a[1] * a[5] - a[2] * a[4]) * r;
+  inv[3] = (a[5] * a[6] - a[3] * a[8]) * r;
+  inv[4] = (a[0] * a[8] - a[2] * a[6]) * r;
+  inv[5] = (a[2] * a[3] - a[0] * a[5]) * r;
+  inv[6] = (a[3] * a[7] - a[4] * a[6]) * r;
+  inv[7] = (a[1] * a[6] - a[0] * a[7]) * r;
+  inv[8] = (a[0] * a[4] - a[1] * a[3]) * r;
+  return det;
+}
+
+void pd_sym_eigen(const double s[6], double l[3], double q[9])
+{
+  double a[9];
+  pd_sym_to_full(s, a);
+  for (int k = 0; k < 9; k++) q[k] = (k % 4 == 0);
+  for (int sweep = 0; sweep < 50; sweep++) {
+    const double off = a[1] * a[1] + a[2] * a[2] + a[5] * a[5];
+    const double diag = a[0] * a[0] + a[4] * a[4] + a[8] * a[8];
+    if (off <= 1e-32 * diag || off == 0.0) break;
+    for (int p = 0; p < 2; p++)
+      for (int r = p + 1; r < 3; r++) {
+        const double apr = a[3 * p + r];
+        if (apr == 0.0) continue;
+        /* the rotation that zeroes a_pr (stable form of the Jacobi angle) */
+        const double theta = (a[3 * r + r] - a[3 * p + p]) / (2.0 * apr);
+        const double t = (theta >= 0.0 ? 1.0 : -1.0) / (fabs(theta) + sqrt(theta * theta + 1.0));
+        const double c = 1.0 / sqrt(t * t + 1.0), sn = t * c;
+        for (int k = 0; k < 3; k++) {  /* a <- a G (columns p, r) */
+          const double akp = a[3 * k + p], akr = a[3 * k + r];
+          a[3 * k + p] = c * akp - sn * akr;
+          a[3 * k + r] = sn * akp + c * akr;
+        }
+        for (int k = 0; k < 3; k++) {  /* a <- G^T a (rows p, r) */
+          const double apk = a[3 * p + k], ark = a[3 * r + k];
+          a[3 * p + k] = c * apk - sn * ark;
+          a[3 * r + k] = sn * apk + c * ark;
+        }
+        for (int k = 0; k < 3; k++) {  /* q <- q G */
+          const double qkp = q[3 * k + p], qkr = q[3 * k + r];
+          q[3 * k + p] = c * qkp - sn * qkr;
+          q[3 * k + r] = sn * qkp + c * qkr;
+        }
+      }
+  }
+  l[0] = a[0], l[1] = a[4], l[2] = a[8];
+}
+
+void pd_sym_from_eigen(const double l[3], const double q[9], double s[6])
+{
+  for (int k = 0; k < 6; k++) {
+    const int r = SYM_ROW[k], c = SYM_COL[k];
+    s[k] = q[3 * r] * l[0] * q[3 * c] + q[3 * r + 1] * l[1] * q[3 * c + 1] +
+        q[3 * r + 2] * l[2] * q[3 * c + 2];
+  }
+}
+
+void pd_sym_rotate_to(const double q[9], const double t[6], double out[6])
+{
+  double a[9], qt_a[9], b[9];
+  pd_sym_to_full(t, a);
+  pd_mat_tmul(q, a, qt_a);
+  pd_mat_mul(qt_a, q, b);
+  pd_full_to_sym(b, out);
+}
+
+void pd_sym_rotate_from(const double q[9], const double t[6], double out[6])
+{
+  double a[9], qa[9], b[9];
+  pd_sym_to_full(t, a);
+  pd_mat_mul(q, a, qa);
+  pd_mat_mult(qa, q, b);
+  pd_full_to_sym(b, out);
+}
+
+#define SQRT2 1.41421356237309504880
+
+void pd_mandel_from_sym(const double s[6], double v[6])
+{
+  for (int k = 0; k < 6; k++) v[k] = k < 3 ? s[k] : SQRT2 * s[k];
+}
+
+void pd_mandel_to_sym(const double v[6], double s[6])
+{
+  for (int k = 0; k < 6; k++) s[k] = k < 3 ? v[k] : v[k] / SQRT2;
+}
+
+/* position of (r, c), r <= c, in the packed upper triangle */
+static int packed(int r, int c)
+{
+  return r * 6 - r * (r - 1) / 2 + (c - r);
+}
+
+void pd_sym4_add_dyad(double m[PD_SYM4], const double n[3], double w)
+{
+  const double nn[6] = {n[0] * n[0], n[1] * n[1], n[2] * n[2], n[0] * n[1], n[0] * n[2], n[1] * n[2]};
+  double v[6];
+  pd_mandel_from_sym(nn, v);
+  int p = 0;
+  for (int r = 0; r < 6; r++)
+    for (int c = r; c < 6; c++) m[p++] += w * v[r] * v[c];
+}
+
+int pd_sym4_invert(double m[PD_SYM4], int dim)
+{
+  static const int all[6] = {0, 1, 2, 3, 4, 5}, plane[3] = {0, 1, 3};
+  const int *ix = dim == 2 ? plane : all;
+  const int n = dim == 2 ? 3 : 6;
+  /* Gauss-Jordan on the used block; a positive pivot at each step is what
+   * a positive definite matrix gives */
+  double a[6][12];
+  for (int r = 0; r < n; r++)
+    for (int c = 0; c < n; c++) {
+      const int i = ix[r], j = ix[c];
+      a[r][c] = m[i <= j ? packed(i, j) : packed(j, i)];
+      a[r][n + c] = r == c;
+    }
+  double scale = 0.0;
+  for (int r = 0; r < n; r++) scale = fmax(scale, fabs(a[r][r]));
+  int ok = scale > 0.0;
+  for (int p = 0; ok && p < n; p++) {
+    if (!(a[p][p] > 1e-12 * scale)) {
+      ok = 0;
+      break;
+    }
+    const double inv = 1.0 / a[p][p];
+    for (int c = 0; c < 2 * n; c++) a[p][c] *= inv;
+    for (int r = 0; r < n; r++) {
+      if (r == p || a[r][p] == 0.0) continue;
+      const double f = a[r][p];
+      for (int c = 0; c < 2 * n; c++) a[r][c] -= f * a[p][c];
+    }
+  }
+  memset(m, 0, PD_SYM4 * sizeof(double));
+  if (!ok) return 0;
+  for (int r = 0; r < n; r++)
+    for (int c = r; c < n; c++) {
+      const int i = ix[r], j = ix[c];
+      m[i <= j ? packed(i, j) : packed(j, i)] = 0.5 * (a[r][n + c] + a[c][n + r]);
+    }
+  return 1;
+}
+
+void pd_sym4_apply(const double m[PD_SYM4], const double s[6], double out[6])
+{
+  double v[6], r[6] = {0, 0, 0, 0, 0, 0};
+  pd_mandel_from_sym(s, v);
+  for (int i = 0; i < 6; i++)
+    for (int j = 0; j < 6; j++) r[i] += m[i <= j ? packed(i, j) : packed(j, i)] * v[j];
+  pd_mandel_to_sym(r, out);
+}

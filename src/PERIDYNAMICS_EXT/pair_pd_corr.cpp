@@ -1,0 +1,449 @@
+/* ----------------------------------------------------------------------
+   PERIDYNAMICS_EXT: pair_style pd/corr (T14 ch. 2, 4 and 7).
+
+   Per step: the sums of each atom's family over each bond once (shape
+   tensor, deformation gradient; extended: the Seth-Hill strain and the
+   family's fourth moment), summed onto owners; the law at each owned atom
+   (the per-atom tensor work, out of the bond loop); its tensor sent to the
+   ghosts; forces over each bond once.
+------------------------------------------------------------------------- */
+
+#include "pair_pd_corr.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_pd_bonds.h"
+#include "force.h"
+#include "memory.h"
+#include "pd_compat.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+extern "C" {
+#include "pd_influence.h"
+#include "pd_ordinary.h"
+#include "pd_params.h"
+}
+
+using namespace LAMMPS_NS;
+
+static const char *const MODEL_NAMES[] = {"elastic", "neohookean", "j2", "johnson_cook"};
+static const int NMODELS = 4;
+
+PairPDCorr::PairPDCorr(LAMMPS *lmp) :
+    PairPD(lmp, pd_corr_coefs, PD_CORR_NCOEFS), extended(1), model(-1), influence(-1),
+    stabilization(0.0), thermal(0), damage(0), order(0.0), spring(nullptr), sums(nullptr)
+{
+}
+
+PairPDCorr::~PairPDCorr()
+{
+  memory->destroy(spring);
+}
+
+void PairPDCorr::settings(int narg, char **arg)
+{
+  extended = 1;
+  model = -1;
+  influence = -1;
+  stabilization = 0.0;
+  PairPD::settings(narg, arg);
+  if (model < 0)
+    error->all(FLERR, "Pair pd/corr: 'model' missing: elastic, neohookean, j2 or johnson_cook");
+  if (extended && stabilization > 0.0)
+    error->all(FLERR, "Pair pd/corr: 'stabilization' is for 'strain classical' (extended "
+               "correspondence has no zero-energy modes to suppress)");
+}
+
+int PairPDCorr::parse_setting(int narg, char **arg, int iarg)
+{
+  const char *key = arg[iarg];
+  if (strcmp(key, "strain") && strcmp(key, "model") && strcmp(key, "stabilization") &&
+      strcmp(key, "influence"))
+    return 0;
+  if (iarg + 1 >= narg) error->all(FLERR, "Pair pd/corr: '{}' needs a value", key);
+  const char *val = arg[iarg + 1];
+  if (strcmp(key, "strain") == 0) {
+    if (strcmp(val, "extended") == 0) extended = 1;
+    else if (strcmp(val, "classical") == 0) extended = 0;
+    else error->all(FLERR, "Pair pd/corr: strain '{}': expected classical or extended", val);
+  } else if (strcmp(key, "model") == 0) {
+    model = -1;
+    for (int k = 0; k < NMODELS; k++)
+      if (strcmp(val, MODEL_NAMES[k]) == 0) model = k;
+    if (model < 0)
+      error->all(FLERR, "Pair pd/corr: model '{}': expected elastic, neohookean, j2 or johnson_cook", val);
+  } else if (strcmp(key, "stabilization") == 0) {
+    stabilization = finite_number("stabilization", val);
+    if (stabilization < 0.0)
+      error->all(FLERR, "Pair pd/corr: stabilization {}: expected a coefficient >= 0", val);
+  } else {
+    influence = pd_influence_from_name(val);
+    if (influence < 0)
+      error->all(FLERR, "Pair pd/corr: unknown influence function '{}' ({})", val, pd_influence_names());
+  }
+  return 2;
+}
+
+std::string PairPDCorr::family_settings() const
+{
+  return pd_influence_name((pd_influence_kind) influence);
+}
+
+// The constants each model reads beyond the elastic ones.
+bool PairPDCorr::uses_coefficient(int p) const
+{
+  const bool j2 = model == PD_CORR_J2, jc = model == PD_CORR_JOHNSON_COOK;
+  if (p == PD_CORR_YIELD) return j2 || jc;
+  if (p == PD_CORR_HARDENING) return j2;
+  if (p >= PD_CORR_JC_B && p < PD_CORR_NCOEFS) return jc;
+  return true;
+}
+
+// The elastic constants of a type, and the constants its model needs (and
+// no others: a constant the model would not use is an error, not ignored).
+void PairPDCorr::check_coeff(int i, int j)
+{
+  if (i != j) return;
+  const pd_elastic m = elastic(i, j, "pd/corr");
+  coef[PD_CORR_K][i][j] = m.K;
+  coef[PD_CORR_G][i][j] = m.G;
+  coef[PD_CORR_E][i][j] = m.E;
+  coef[PD_CORR_NU][i][j] = m.nu;
+  for (int p : {PD_CORR_K, PD_CORR_G, PD_CORR_E}) check_derived(p, i, j);
+
+  const bool j2 = model == PD_CORR_J2, jc = model == PD_CORR_JOHNSON_COOK;
+  auto need = [&](int p, bool required) {
+    const bool used = required && uses_coefficient(p);
+    if (used && !given(p, i, j))
+      error->all(FLERR, "Pair pd/corr coeff {} {}: model {} needs {} ({})", i, j, MODEL_NAMES[model],
+                 decl[p].name, decl[p].what);
+    if (!used && given(p, i, j))
+      error->all(FLERR, "Pair pd/corr coeff {} {}: {} ({}) is not used by model {}", i, j,
+                 decl[p].name, decl[p].what, MODEL_NAMES[model]);
+  };
+  need(PD_CORR_YIELD, j2 || jc);
+  if (j2 && !given(PD_CORR_HARDENING, i, j)) coef[PD_CORR_HARDENING][i][j] = 0.0;
+  need(PD_CORR_HARDENING, j2);
+  need(PD_CORR_JC_B, jc);
+  need(PD_CORR_JC_N, jc);
+  const bool heats = jc && given(PD_CORR_T_MELT, i, j), damages = jc && given(PD_CORR_D1, i, j);
+  need(PD_CORR_T_MELT, heats);
+  need(PD_CORR_HEAT_CAPACITY, heats);
+  need(PD_CORR_D1, damages);
+  if (heats && !(value(PD_CORR_T_MELT, i, j) > value(PD_CORR_T_ROOM, i, j)))
+    error->all(FLERR, "Pair pd/corr coeff {} {}: T_melt {} must exceed T_room {}", i, j,
+               value(PD_CORR_T_MELT, i, j), value(PD_CORR_T_ROOM, i, j));
+}
+
+// E and nu of a type's material; between two types, their means
+void PairPDCorr::fracture_elastic(int i, int j, double &E, double &nu) const
+{
+  E = 0.5 * (value(PD_CORR_E, i, i) + value(PD_CORR_E, j, j));
+  nu = 0.5 * (value(PD_CORR_NU, i, i) + value(PD_CORR_NU, j, j));
+}
+
+void PairPDCorr::init_style()
+{
+  if (legacy) error->all(FLERR, "Pair pd/corr has no legacy PERI counterpart: drop 'legacy'");
+  if (influence < 0) influence = PD_INFLUENCE_CONSTANT;
+  if (model_dim == PD_PLANE_STRESS && model != PD_CORR_ELASTIC)
+    error->all(FLERR, "Pair pd/corr: plane stress needs model elastic (the {} law has no closed "
+               "form for its out-of-plane strain); use plane strain", MODEL_NAMES[model]);
+  int first = 0;
+  thermal = damage = 0;
+  for (int i = 1; i <= atom->ntypes; i++) {
+    if (!setflag[i][i]) continue;
+    if (!first) first = i;
+    if (coef[PD_CORR_M][i][i] != coef[PD_CORR_M][first][first])
+      error->all(FLERR, "Pair pd/corr: all types need the same strain order m ({} has {}, {} has {})",
+                 i, coef[PD_CORR_M][i][i], first, coef[PD_CORR_M][first][first]);
+    if (model == PD_CORR_JOHNSON_COOK) {
+      thermal |= given(PD_CORR_T_MELT, i, i);
+      damage |= given(PD_CORR_D1, i, i);
+    }
+  }
+  order = first ? coef[PD_CORR_M][first][first] : 0.0;
+  PairPD::init_style();
+}
+
+PDFamilySpec::Weight PairPDCorr::weight_rule() const
+{
+  const auto kind = (pd_influence_kind) influence;
+  const int d = dim();
+  return [kind, d](double r, double horizon) { return pd_influence(kind, d, r, horizon); };
+}
+
+// Only the fields the scene asks for: plastic history with a plastic law,
+// temperature with thermal softening, damage with Johnson-Cook damage.
+std::vector<PDField> PairPDCorr::per_atom_fields() const
+{
+  const int kept = PDField::OUTPUT | PDField::MIGRATE | PDField::RESTART;
+  std::vector<PDField> f = {
+      {"deformation_gradient", 9, PDField::OUTPUT | (stabilization > 0.0 ? PDField::FORWARD : 0)},
+      {"stress", 6, PDField::OUTPUT},
+      {"corr_tensor", 9, PDField::FORWARD},
+      // the first pass's sums: scratch, summed from ghosts onto owners
+      {"corr_sums", extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL, 0}};
+  if (plastic()) {
+    f.push_back({"plastic_strain", 1, kept});
+    f.push_back({"plastic_tensor", 6, PDField::MIGRATE | PDField::RESTART});
+    f.push_back({"plastic_work", 1, kept});
+  }
+  if (thermal) f.push_back({"temperature", 1, kept});
+  if (damage) f.push_back({"jc_damage", 1, kept | PDField::FORWARD});
+  return f;
+}
+
+double *PairPDCorr::field(const char *name) const
+{
+  const std::vector<PDField> f = per_atom_fields();
+  for (size_t k = 0; k < f.size() && k < field_id.size(); k++)
+    if (f[k].name == name) return bonds->field(field_id[k]);
+  return nullptr;
+}
+
+// Per run: each type's law, and the springs of broken bonds in contact.
+void PairPDCorr::setup_run()
+{
+  const int ntypes = atom->ntypes;
+  complete_volume = complete_family_volumes();
+  material.assign(ntypes + 1, pd_corr_material{});
+  for (int t = 1; t <= ntypes; t++) {
+    if (!setflag[t][t]) continue;
+    pd_corr_material &m = material[t];
+    m.model = (pd_corr_model) model;
+    const double K = value(PD_CORR_K, t, t), G = value(PD_CORR_G, t, t);
+    m.mu = G;
+    m.lambda = K - 2.0 * G / 3.0;
+    m.plane_stress = model_dim == PD_PLANE_STRESS;
+    auto v = [&](int p) { return given(p, t, t) ? value(p, t, t) : 0.0; };
+    m.yield = v(PD_CORR_YIELD);
+    m.hardening = v(PD_CORR_HARDENING);
+    m.jc_b = v(PD_CORR_JC_B);
+    m.jc_n = v(PD_CORR_JC_N);
+    m.jc_c = v(PD_CORR_JC_C);
+    m.jc_rate0 = v(PD_CORR_JC_RATE0);
+    m.thermal = given(PD_CORR_T_MELT, t, t) && model == PD_CORR_JOHNSON_COOK;
+    m.t_room = v(PD_CORR_T_ROOM);
+    m.t_melt = v(PD_CORR_T_MELT);
+    m.t_exp = v(PD_CORR_T_EXP);
+    m.heat_capacity = v(PD_CORR_HEAT_CAPACITY);
+    m.taylor_quinney = v(PD_CORR_TAYLOR_QUINNEY);
+    m.damage = given(PD_CORR_D1, t, t) && model == PD_CORR_JOHNSON_COOK;
+    for (int k = 0; k < 5; k++) m.d[k] = v(PD_CORR_D1 + k);
+  }
+  memory->destroy(spring);
+  memory->create(spring, (ntypes + 1) * (ntypes + 1), "pair:spring");
+  for (int i = 0; i <= ntypes; i++)
+    for (int j = 0; j <= ntypes; j++)
+      spring[i * (ntypes + 1) + j] = i && j && setflag[i][i] && setflag[j][j] ? contact_micromodulus(i, j) : 0.0;
+  fill_reference_vectors();
+  // a new atom (or a first run) starts at room temperature
+  if (thermal) {
+    double *temp = field("temperature");
+    for (int i = 0; i < atom->nlocal; i++)
+      if (temp[i] == 0.0) temp[i] = material[atom->type[i]].t_room;
+  }
+}
+
+PairPDCorr::Fields PairPDCorr::fields() const
+{
+  return {field("deformation_gradient"), field("stress"), field("corr_tensor"), field("plastic_strain"),
+          field("plastic_tensor"), field("plastic_work"), field("temperature"), field("jc_damage")};
+}
+
+// A bond's xi from the reference positions, the nearest periodic image as
+// when the store built the families (at that time the box is the reference
+// box; later the vector stays with the bond, through box deformation and
+// restart). A bond whose xi is still zero is new.
+void PairPDCorr::fill_reference_vectors()
+{
+  const pd_bond_view v = bonds->view();
+  double *xiv = bonds->history_data();
+  double **x0 = atom->x0;
+  for (int i = 0; i < v.nowner; i++)
+    for (int k = 0; k < v.count[i]; k++) {
+      double *xi = xiv + 3 * (i * v.stride + k);
+      if (xi[0] != 0.0 || xi[1] != 0.0 || xi[2] != 0.0) continue;
+      const int j = v.far[i * v.stride + k];
+      for (int c = 0; c < 3; c++) xi[c] = x0[j][c] - x0[i][c];
+      PDCompat::minimum_image(domain, xi);
+    }
+}
+
+// N = d / m of a complete family of the atom's type (the influence
+// function's normalization tr_w(1) = d, T14 eq. 4.5)
+double PairPDCorr::family_norm(int i) const
+{
+  const double m = complete_volume[atom->type[i]];
+  return m > 0.0 ? dim() / m : 0.0;
+}
+
+pd_corr_state PairPDCorr::state(const Fields &f)
+{
+  pd_corr_state st = {};
+  st.extended = extended;
+  st.dim = dim();
+  st.order = order;
+  st.xi = bonds->history_data();
+  st.sum = sums;
+  st.tensor = f.tensor;
+  st.defgrad = f.defgrad;
+  st.stabilization = stabilization;
+  st.spring = spring;
+  st.damage = f.damage;
+  st.damage_max = 0.0;
+  if (damage) {
+    // D_c is one value: the smallest over the types
+    st.damage_max = 1.0;
+    for (int t = 1; t <= atom->ntypes; t++)
+      if (setflag[t][t]) st.damage_max = MIN(st.damage_max, value(PD_CORR_DC, t, t));
+  }
+  return st;
+}
+
+// One owned atom: its history in, the law, its outputs and history out.
+void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, pd_tally &t)
+{
+  const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
+  double *eqps = f.eqps, *ep = f.plastic, *wp = f.work, *temp = f.temperature, *dmg = f.damage;
+  pd_corr_history h = {};
+  if (ep) {
+    for (int k = 0; k < 6; k++) h.plastic[k] = ep[6 * i + k];
+    h.eqps = eqps[i];
+    h.plastic_work = wp[i];
+  }
+  if (temp) h.temperature = temp[i];
+  if (dmg) h.damage = dmg[i];
+  const int ti = atom->type[i];
+  pd_corr_atom_out o;
+  const int ok = pd_corr_atom(&st, &material[ti], sums + (bigint) i * width, &h, update->dt,
+                              atom->rmass[i], &o);
+  if (ok < 0) {
+    // error->one aborts the job: what this rank wrote so far must reach the log
+    if (screen) fflush(screen);
+    if (logfile) fflush(logfile);
+    error->one(FLERR, "Pair pd/corr: atom {} (type {}) has a deformation its {} law rejects "
+               "(an inverted neighbourhood, J <= 0, or a non-finite stress); a smaller timestep "
+               "or 'strain extended' with m <= 0 keeps matter from inverting",
+               atom->tag[i], ti, MODEL_NAMES[model]);
+  }
+  memcpy(f.defgrad + 9 * i, o.F, sizeof(o.F));
+  memcpy(f.stress + 6 * i, o.stress, sizeof(o.stress));
+  memcpy(f.tensor + 9 * i, o.tensor, sizeof(o.tensor));
+  if (ep) {
+    for (int k = 0; k < 6; k++) ep[6 * i + k] = h.plastic[k];
+    eqps[i] = h.eqps;
+    wp[i] = h.plastic_work;
+  }
+  if (temp) temp[i] = h.temperature;
+  if (dmg) dmg[i] = h.damage;
+  if (t.eatom) t.eatom[i] += o.energy;
+  t.energy += o.energy;
+}
+
+void PairPDCorr::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  if (report_pending) report_setup();
+
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
+  const pd_bond_view v = bonds->view();
+  // the damage of both ends decides whether a bond counts: the same values
+  // in both passes (the owners' are updated in between)
+  std::vector<double> damage_used;
+  const Fields f = fields();
+  sums = field("corr_sums");
+  for (bigint k = 0; k < (bigint) nall * width; k++) sums[k] = 0.0;
+  pd_corr_state st = state(f);
+  const std::vector<PDField> decl = per_atom_fields();
+  if (damage) {
+    bonds->forward(field_id[decl.size() - 1]);    // jc_damage, the last
+    damage_used.assign(st.damage, st.damage + nall);
+    st.damage = damage_used.data();
+  }
+
+  const bool fails = failing();
+  pd_failure fail = fails ? failure_state() : pd_failure{};
+  pd_failure *fp = fails ? &fail : nullptr;
+  pd_tally t = {};
+  t.eatom = eflag_atom ? eatom : nullptr;
+  const pd_loop L = evaluation(v, evflag ? &t : nullptr, fp);
+  pd_corr_sums(&L, &st);
+  bonds->sum_to_owners(field_id[3]);    // corr_sums
+  for (int i = 0; i < nlocal; i++) atom_step(i, st, f, t);
+
+  for (size_t k = 0; k < decl.size(); k++)
+    if (decl[k].flags & PDField::FORWARD && decl[k].name != "jc_damage") bonds->forward(field_id[k]);
+  pd_corr_forces(&L, &st);
+  if (fails) account_failure(fail);
+  if (evflag) tally(t);
+}
+
+// As the ordinary solid of the same moduli (pd_ordinary_stiffness): an
+// estimate of the bond stiffness, N (2 mu_bar + d |lambda_bar|) per atom.
+void PairPDCorr::stable_dt_sum(double *sum)
+{
+  const int nlocal = atom->nlocal;
+  double *k = field("corr_tensor");    // scratch: stiffness coefficient per atom
+  for (int i = 0; i < nlocal; i++) {
+    const int ti = atom->type[i];
+    pd_elastic m;
+    pd_elastic_from_K_G(value(PD_CORR_K, ti, ti), value(PD_CORR_G, ti, ti), &m);
+    const pd_lame l = pd_ordinary_lame(model_dim, &m);
+    const double wv = bonds->weighted_volume()[i];
+    k[i] = wv > 0.0 ? dim() / wv * (2.0 * l.mu + dim() * fabs(l.lambda)) : 0.0;
+  }
+  bonds->copy_to_ghosts(k);
+  const pd_bond_view v = bonds->view();
+  pd_ordinary_stiffness(&v, k, atom->vfrac, sum);
+}
+
+void PairPDCorr::report_extra()
+{
+  std::string fields;
+  for (const PDField &f : per_atom_fields())
+    if (f.flags & (PDField::OUTPUT | PDField::RESTART)) fields += " " + f.name;
+  utils::logmesg(lmp, "pd/corr: {} correspondence{}, model {}, strain order m = {}, influence {}; "
+                 "per-atom fields:{}\n", extended ? "extended (T14 4.2)" : "classical (T14 2.2.1)",
+                 stabilization > 0.0 ? fmt::format(" with stabilization {}", stabilization) : "",
+                 MODEL_NAMES[model], order, pd_influence_name((pd_influence_kind) influence), fields);
+}
+
+void PairPDCorr::write_restart_settings(FILE *fp)
+{
+  PairPD::write_restart_settings(fp);
+  fwrite(&extended, sizeof(int), 1, fp);
+  fwrite(&model, sizeof(int), 1, fp);
+  fwrite(&influence, sizeof(int), 1, fp);
+  fwrite(&stabilization, sizeof(double), 1, fp);
+}
+
+void PairPDCorr::read_restart_settings(FILE *fp)
+{
+  PairPD::read_restart_settings(fp);
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &extended, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &model, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &influence, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &stabilization, sizeof(double), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&extended, 1, MPI_INT, 0, world);
+  MPI_Bcast(&model, 1, MPI_INT, 0, world);
+  MPI_Bcast(&influence, 1, MPI_INT, 0, world);
+  MPI_Bcast(&stabilization, 1, MPI_DOUBLE, 0, world);
+}
+
+// The PMB micromodulus of the same Young's modulus (contact, broken bonds,
+// stabilization).
+double PairPDCorr::contact_micromodulus(int i, int j) const
+{
+  const double E = 0.5 * (coef[PD_CORR_E][i][i] + coef[PD_CORR_E][j][j]);
+  return pd_pmb_micromodulus(model_dim, E, horizon(i, j), thickness);
+}

@@ -1,0 +1,86 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDYNAMICS_EXT: pair_style pd/corr, correspondence materials: a
+   classical constitutive law (elastic, neo-Hookean, J2, Johnson-Cook with
+   damage) from the classical nonlocal deformation gradient or from T14's
+   extended (Seth-Hill) nonlocal strain.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(pd/corr,PairPDCorr);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_PD_CORR_H
+#define LMP_PAIR_PD_CORR_H
+
+#include "pair_pd.h"
+#include "pd_failure_law.h"
+
+extern "C" {
+#include "pd_corr.h"
+}
+
+namespace LAMMPS_NS {
+
+class PairPDCorr : public PairPD, public PDBondEnergies {
+ public:
+  PairPDCorr(class LAMMPS *);
+  ~PairPDCorr() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  const char *style_name() const override { return "pd/corr"; }
+  void init_style() override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  double contact_micromodulus(int, int) const override;
+  std::vector<PDField> per_atom_fields() const override;
+  void fracture_elastic(int i, int j, double &E, double &nu) const override;
+  // extended correspondence's bond energies for 'fail energy': d psi/d phi
+  // of a bond = w eps_m (n . Sigma . n) at each end (pd_corr.h)
+  const PDBondEnergies *bond_energies() const override { return extended ? this : nullptr; }
+  double family_norm(int i) const override;
+  double complete_family_volume(int type) const override { return complete_volume[type]; }
+  pd_influence_kind influence_kind() const override { return (pd_influence_kind) influence; }
+
+ protected:
+  int extended;          // strain: 1 extended (T14 4.2), 0 classical (T14 2.2.1)
+  int model;             // pd_corr_model
+  int influence;         // pd_influence_kind
+  double stabilization;  // classical: coefficient of the non-affine penalty
+  int thermal, damage;   // Johnson-Cook: temperature, damage (from the coefficients)
+  double order;          // Seth-Hill order m of the strain the law works on
+  std::vector<pd_corr_material> material;   // per type
+  std::vector<double> complete_volume;      // per type: weighted volume of a complete family
+  double *spring;        // per type pair: PMB micromodulus
+  double *sums;          // per atom: the first pass's sums (field corr_sums)
+
+  int parse_setting(int, char **, int) override;
+  void check_coeff(int, int) override;
+  bool uses_coefficient(int p) const override;
+  int uses_weights() const override { return 1; }
+  // each bond's reference vector xi, kept by the store (moves and restarts
+  // with the bond): filled the first time the bond is seen
+  int history_per_bond() const override { return 3; }
+  void fill_reference_vectors();
+  PDFamilySpec::Weight weight_rule() const override;
+  void stable_dt_sum(double *) override;
+  void report_extra() override;
+  void setup_run() override;
+  std::string family_settings() const override;
+
+  // the per-atom fields of one evaluation (null: not kept in this scene)
+  struct Fields {
+    double *defgrad, *stress, *tensor, *eqps, *plastic, *work, *temperature, *damage;
+  };
+  Fields fields() const;
+  double *field(const char *name) const;
+  int plastic() const { return model == PD_CORR_J2 || model == PD_CORR_JOHNSON_COOK; }
+  pd_corr_state state(const Fields &f);
+  void atom_step(int i, const pd_corr_state &st, const Fields &f, pd_tally &t);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
