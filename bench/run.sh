@@ -30,4 +30,7 @@ if nb: print(f"  contact list: {nb[0]} neighbours per atom (cutoff = contact dis
 print("cost of the nonlinear strain (time / time of m = 1/2):")
 for new in ("pd_ordinary_m0", "pd_ordinary_m-1"):
     print(f"  {new:20s} {times[new] / times['pd_ordinary']:6.2f}x")
+print("cost of correspondence (time / time of pd_ordinary m = 1/2):")
+for new in ("pd_corr_classical", "pd_corr_extended", "pd_corr_j2"):
+    print(f"  {new:20s} {times[new] / times['pd_ordinary']:6.2f}x")
 PY

@@ -32,7 +32,11 @@ thermo_modify format float %.15g
 MATERIALS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../potentials/materials.pd")
 PAIRS["pd/ordinary m=0 PMMA"] = (f"pair_style pd/ordinary\npair_coeff * * file {MATERIALS} PMMA "
                                  f"horizon {HORIZON} m 0\n")
-for style in ["pd/bond", "pd/ordinary", "pd/ordinary m=0 PMMA"]:
+# extended correspondence (hyperelastic: Hencky's solid at m = 0), copper
+# from the file (its yield and hardening are not used by model elastic)
+PAIRS["pd/corr extended copper"] = (f"pair_style pd/corr model elastic\npair_coeff * * file "
+                                    f"{MATERIALS} OFHC_copper horizon {HORIZON}\n")
+for style in ["pd/bond", "pd/ordinary", "pd/ordinary m=0 PMMA", "pd/corr extended copper"]:
     out, _ = run(block(16) + PAIRS[style] + "run 0\n", d)
     dt_stable = log_value(out, r"stable time step estimate \(MS07 eq. 43\) ([0-9.eE+-]+)")
     dt = 0.5 * dt_stable
