@@ -41,8 +41,9 @@ class LawEnergy : public PDFailureLaw {
   std::string unsupported() const override
   {
     if (pair->bond_energies()) return "";
-    return "a state-based material (pd/ordinary): it weighs the energy each bond end holds against "
-           "G_c; bond-based bonds fail by 'fail stretch'";
+    return "a material with per-bond energies (pd/ordinary, pd/corr with strain extended): it "
+           "weighs the energy each bond end holds against G_c; bond-based bonds and classical "
+           "correspondence fail by 'fail stretch'";
   }
 
   int parse(PDCoefLine &line, int narg, char **arg, int iarg) override

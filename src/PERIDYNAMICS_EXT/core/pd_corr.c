@@ -260,8 +260,16 @@ int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const dou
      * stress law sets its own E_33), at the family's own scale */
     K[8] = N[8] = 0.5 * (K[0] + K[4]);
   }
-  const double scale = K[0] + K[4] + K[8], tiny = 1e-12 * scale * scale * scale;
-  if (!(fabs(pd_inverse3(K, Kinv, tiny)) > tiny)) return 0;
+  /* a family flattened by broken or damaged bonds (its shape tensor's
+   * smallest principal value below PD_CORR_FLAT of its largest; a
+   * corner's complete family is about 0.3) gives no strain: its inverse
+   * would turn round-off into force */
+  double kl[3], kq[9], ks[6];
+  pd_full_to_sym(K, ks);
+  pd_sym_eigen(ks, kl, kq);
+  const double kmax = fmax(kl[0], fmax(kl[1], kl[2])), kmin = fmin(kl[0], fmin(kl[1], kl[2]));
+  if (!(kmin > PD_CORR_FLAT * kmax)) return 0;
+  pd_inverse3(K, Kinv, 0.0);
   pd_mat_mul(N, Kinv, o->F);
 
   double E[6], c[3], q[9];

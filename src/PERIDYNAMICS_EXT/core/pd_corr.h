@@ -90,8 +90,11 @@ typedef struct pd_corr_atom_out {
   double stress[6];   /* Cauchy stress */
   double energy;      /* stored energy density */
 } pd_corr_atom_out;
-/* Returns 1; 0 when the family spans no volume (no bonds left: everything
- * zero) and -1 when the law rejects the state (out undefined). */
+/* Returns 1; 0 when the family is too flat to give a strain (no bonds left,
+ * or its shape tensor's smallest principal value below PD_CORR_FLAT times
+ * its largest: everything zero, the atom carries no stress) and -1 when the
+ * law rejects the state (out undefined). */
+#define PD_CORR_FLAT 0.1
 int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const double *sum,
                  pd_corr_history *h, double dt, double rho, pd_corr_atom_out *out);
 
