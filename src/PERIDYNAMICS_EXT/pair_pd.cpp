@@ -891,33 +891,40 @@ void PairPD::read_restart(FILE *fp)
     }
 }
 
+void PDSettingsIO::operator()(int &v)
+{
+  if (writing) fwrite(&v, sizeof(int), 1, fp);
+  else if (lmp->comm->me == 0) utils::sfread(FLERR, &v, sizeof(int), 1, fp, nullptr, lmp->error);
+  if (!writing) MPI_Bcast(&v, 1, MPI_INT, 0, lmp->world);
+}
+
+void PDSettingsIO::operator()(double &v)
+{
+  if (writing) fwrite(&v, sizeof(double), 1, fp);
+  else if (lmp->comm->me == 0) utils::sfread(FLERR, &v, sizeof(double), 1, fp, nullptr, lmp->error);
+  if (!writing) MPI_Bcast(&v, 1, MPI_DOUBLE, 0, lmp->world);
+}
+
 void PairPD::write_restart_settings(FILE *fp)
 {
-  const int dimcode = (int) model_dim;
-  fwrite(&recontact, sizeof(int), 1, fp);
-  fwrite(&legacy, sizeof(int), 1, fp);
-  fwrite(&lattice_spacing, sizeof(double), 1, fp);
-  fwrite(&dimcode, sizeof(int), 1, fp);
-  fwrite(&thickness, sizeof(double), 1, fp);
+  PDSettingsIO io(lmp, fp, true);
+  restart_settings(io);
 }
 
 void PairPD::read_restart_settings(FILE *fp)
 {
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &recontact, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &legacy, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &lattice_spacing, sizeof(double), 1, fp, nullptr, error);
-  }
-  int dimcode = 0;
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &dimcode, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &thickness, sizeof(double), 1, fp, nullptr, error);
-  }
-  MPI_Bcast(&recontact, 1, MPI_INT, 0, world);
-  MPI_Bcast(&legacy, 1, MPI_INT, 0, world);
-  MPI_Bcast(&lattice_spacing, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&dimcode, 1, MPI_INT, 0, world);
-  MPI_Bcast(&thickness, 1, MPI_DOUBLE, 0, world);
+  PDSettingsIO io(lmp, fp, false);
+  restart_settings(io);
+}
+
+void PairPD::restart_settings(PDSettingsIO &io)
+{
+  int dimcode = (int) model_dim;
+  io(recontact);
+  io(legacy);
+  io(lattice_spacing);
+  io(dimcode);
+  io(thickness);
   model_dim = (pd_dimension) dimcode;
 }
 

@@ -37,6 +37,20 @@ struct PDCoefLine {
   std::vector<char> seen;
 };
 
+// One pass over a style's settings in a restart file: writes them, or reads
+// them on rank 0 and broadcasts, in the order they are visited.
+class PDSettingsIO {
+ public:
+  PDSettingsIO(class LAMMPS *lmp, FILE *fp, bool writing) : lmp(lmp), fp(fp), writing(writing) {}
+  void operator()(int &v);
+  void operator()(double &v);
+
+ private:
+  class LAMMPS *lmp;
+  FILE *fp;
+  bool writing;
+};
+
 class PairPD : public Pair, public PDFamilySource {
  public:
   // the material's declared coefficients (its core table), horizon first
@@ -49,8 +63,8 @@ class PairPD : public Pair, public PDFamilySource {
   double init_one(int, int) override;
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
-  void write_restart_settings(FILE *) override;
-  void read_restart_settings(FILE *) override;
+  void write_restart_settings(FILE *) final;
+  void read_restart_settings(FILE *) final;
   double memory_usage() override;
 
   double horizon(int itype, int jtype) const { return coef[0][itype][jtype]; }
@@ -118,6 +132,9 @@ class PairPD : public Pair, public PDFamilySource {
   virtual void setup_run() {}                                   // first compute of a run
   virtual void stable_dt_sum(double *sum) = 0;    // add stiffness sums over nall
   virtual void report_extra() {}
+  // the settings kept in restart files: PairPD's, then the style's (call
+  // PairPD::restart_settings first)
+  virtual void restart_settings(PDSettingsIO &io);
 
   void allocate();
   int dim() const { return pd_dimension_count(model_dim); }

@@ -140,15 +140,8 @@ void PairPDBond::stable_dt_sum(double *sum)
   pd_pmb_stiffness(&v, &mat, atom->type, atom->ntypes + 1, atom->vfrac, sum);
 }
 
-void PairPDBond::write_restart_settings(FILE *fp)
+void PairPDBond::restart_settings(PDSettingsIO &io)
 {
-  PairPD::write_restart_settings(fp);
-  fwrite(&plastic, sizeof(int), 1, fp);
-}
-
-void PairPDBond::read_restart_settings(FILE *fp)
-{
-  PairPD::read_restart_settings(fp);
-  if (comm->me == 0) utils::sfread(FLERR, &plastic, sizeof(int), 1, fp, nullptr, error);
-  MPI_Bcast(&plastic, 1, MPI_INT, 0, world);
+  PairPD::restart_settings(io);
+  io(plastic);
 }

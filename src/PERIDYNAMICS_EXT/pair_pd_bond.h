@@ -25,8 +25,6 @@ class PairPDBond : public PairPD {
   const char *style_name() const override { return "pd/bond"; }
   double contact_micromodulus(int i, int j) const override;
   void fracture_elastic(int i, int j, double &E, double &nu) const override;
-  void write_restart_settings(FILE *) override;
-  void read_restart_settings(FILE *) override;
 
  protected:
   int model;            // word given with the last pair_coeff (pmb or microplastic)
@@ -36,6 +34,7 @@ class PairPDBond : public PairPD {
   void check_coeff(int, int) override;
   int history_per_bond() const override { return plastic; }
   void stable_dt_sum(double *) override;
+  void restart_settings(PDSettingsIO &io) override;
 };
 
 }    // namespace LAMMPS_NS

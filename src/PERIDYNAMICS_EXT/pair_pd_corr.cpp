@@ -416,28 +416,13 @@ void PairPDCorr::report_extra()
                  MODEL_NAMES[model], order, pd_influence_name((pd_influence_kind) influence), fields);
 }
 
-void PairPDCorr::write_restart_settings(FILE *fp)
+void PairPDCorr::restart_settings(PDSettingsIO &io)
 {
-  PairPD::write_restart_settings(fp);
-  fwrite(&extended, sizeof(int), 1, fp);
-  fwrite(&model, sizeof(int), 1, fp);
-  fwrite(&influence, sizeof(int), 1, fp);
-  fwrite(&stabilization, sizeof(double), 1, fp);
-}
-
-void PairPDCorr::read_restart_settings(FILE *fp)
-{
-  PairPD::read_restart_settings(fp);
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &extended, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &model, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &influence, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &stabilization, sizeof(double), 1, fp, nullptr, error);
-  }
-  MPI_Bcast(&extended, 1, MPI_INT, 0, world);
-  MPI_Bcast(&model, 1, MPI_INT, 0, world);
-  MPI_Bcast(&influence, 1, MPI_INT, 0, world);
-  MPI_Bcast(&stabilization, 1, MPI_DOUBLE, 0, world);
+  PairPD::restart_settings(io);
+  io(extended);
+  io(model);
+  io(influence);
+  io(stabilization);
 }
 
 // The PMB micromodulus of the same Young's modulus (contact, broken bonds,

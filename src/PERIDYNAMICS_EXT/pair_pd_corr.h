@@ -31,8 +31,6 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   void settings(int, char **) override;
   const char *style_name() const override { return "pd/corr"; }
   void init_style() override;
-  void write_restart_settings(FILE *) override;
-  void read_restart_settings(FILE *) override;
   double contact_micromodulus(int, int) const override;
   std::vector<PDField> per_atom_fields() const override;
   void fracture_elastic(int i, int j, double &E, double &nu) const override;
@@ -66,6 +64,7 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;
   void report_extra() override;
+  void restart_settings(PDSettingsIO &io) override;
   void setup_run() override;
   std::string family_settings() const override;
 

@@ -248,22 +248,11 @@ void PairPDOrdinary::report_extra()
                  lame);
 }
 
-void PairPDOrdinary::write_restart_settings(FILE *fp)
+void PairPDOrdinary::restart_settings(PDSettingsIO &io)
 {
-  PairPD::write_restart_settings(fp);
-  fwrite(&influence, sizeof(int), 1, fp);
-  fwrite(&per_atom_norm, sizeof(int), 1, fp);
-}
-
-void PairPDOrdinary::read_restart_settings(FILE *fp)
-{
-  PairPD::read_restart_settings(fp);
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &influence, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &per_atom_norm, sizeof(int), 1, fp, nullptr, error);
-  }
-  MPI_Bcast(&influence, 1, MPI_INT, 0, world);
-  MPI_Bcast(&per_atom_norm, 1, MPI_INT, 0, world);
+  PairPD::restart_settings(io);
+  io(influence);
+  io(per_atom_norm);
 }
 
 void *PairPDOrdinary::extract(const char *name, int &dim)

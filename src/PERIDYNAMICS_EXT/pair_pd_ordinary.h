@@ -25,8 +25,6 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   void settings(int, char **) override;
   const char *style_name() const override { return "pd/ordinary"; }
   void init_style() override;
-  void write_restart_settings(FILE *) override;
-  void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
   double contact_micromodulus(int, int) const override;
   std::vector<PDField> per_atom_fields() const override;
@@ -54,6 +52,7 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;
   void report_extra() override;
+  void restart_settings(PDSettingsIO &io) override;
   void setup_run() override;
   std::string family_settings() const override;
   double norm(int i) const;
