@@ -453,6 +453,25 @@ pd_elastic PairPD::elastic(int i, int j, const char *who)
   return m;
 }
 
+pd_elastic PairPD::complete_elastic(int i, int j)
+{
+  const pd_elastic m = elastic(i, j, style_name());
+  const int pK = coef_index("K"), pG = coef_index("G"), pE = coef_index("E"), pnu = coef_index("nu");
+  coef[pK][i][j] = m.K;
+  coef[pG][i][j] = m.G;
+  coef[pE][i][j] = m.E;
+  coef[pnu][i][j] = m.nu;
+  for (int p : {pK, pG, pE}) check_derived(p, i, j);
+  return m;
+}
+
+void PairPD::mean_elastic(int i, int j, double &E, double &nu) const
+{
+  const int pE = coef_index("E"), pnu = coef_index("nu");
+  E = 0.5 * (value(pE, i, i) + value(pE, j, j));
+  nu = 0.5 * (value(pnu, i, i) + value(pnu, j, j));
+}
+
 double PairPD::init_one(int i, int j)
 {
   if (setflag[i][j] == 0) {

@@ -148,6 +148,11 @@ class PairPD : public Pair, public PDFamilySource {
   void check_value(const pd_coef &c, int p, int i, int j);
   void check_derived(int p, int i, int j);
   pd_elastic elastic(int i, int j, const char *who);   // from K,G or E,nu coefficients
+  // a type's K, G, E and nu from whichever pair was given, all four written
+  // back and checked (a material that declares all four)
+  pd_elastic complete_elastic(int i, int j);
+  // E and nu of the bonds between two types: the means of theirs
+  void mean_elastic(int i, int j, double &E, double &nu) const;
   double value(int p, int i, int j) const { return coef[p][i][j]; }
   bool given(int p, int i, int j) const;
   bool failure_given(int i, int j) const { return given(ifail, i, j); }   // 'fail' on the line

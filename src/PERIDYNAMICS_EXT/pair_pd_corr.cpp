@@ -109,12 +109,7 @@ bool PairPDCorr::uses_coefficient(int p) const
 void PairPDCorr::check_coeff(int i, int j)
 {
   if (i != j) return;
-  const pd_elastic m = elastic(i, j, "pd/corr");
-  coef[PD_CORR_K][i][j] = m.K;
-  coef[PD_CORR_G][i][j] = m.G;
-  coef[PD_CORR_E][i][j] = m.E;
-  coef[PD_CORR_NU][i][j] = m.nu;
-  for (int p : {PD_CORR_K, PD_CORR_G, PD_CORR_E}) check_derived(p, i, j);
+  complete_elastic(i, j);
 
   const bool j2 = model == PD_CORR_J2, jc = model == PD_CORR_JOHNSON_COOK;
   auto need = [&](int p, bool required) {
@@ -143,8 +138,7 @@ void PairPDCorr::check_coeff(int i, int j)
 // E and nu of a type's material; between two types, their means
 void PairPDCorr::fracture_elastic(int i, int j, double &E, double &nu) const
 {
-  E = 0.5 * (value(PD_CORR_E, i, i) + value(PD_CORR_E, j, j));
-  nu = 0.5 * (value(PD_CORR_NU, i, i) + value(PD_CORR_NU, j, j));
+  mean_elastic(i, j, E, nu);
 }
 
 void PairPDCorr::init_style()

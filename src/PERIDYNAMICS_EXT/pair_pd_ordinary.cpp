@@ -83,19 +83,13 @@ std::string PairPDOrdinary::family_settings() const
 void PairPDOrdinary::check_coeff(int i, int j)
 {
   if (i != j) return;
-  const pd_elastic m = elastic(i, j, "pd/ordinary");
-  coef[PD_ORD_K][i][j] = m.K;
-  coef[PD_ORD_G][i][j] = m.G;
-  coef[PD_ORD_E][i][j] = m.E;
-  coef[PD_ORD_NU][i][j] = m.nu;
-  for (int p : {PD_ORD_K, PD_ORD_G, PD_ORD_E}) check_derived(p, i, j);
+  complete_elastic(i, j);
 }
 
 // E and nu of a type's material; between two types, their means
 void PairPDOrdinary::fracture_elastic(int i, int j, double &E, double &nu) const
 {
-  E = 0.5 * (value(PD_ORD_E, i, i) + value(PD_ORD_E, j, j));
-  nu = 0.5 * (value(PD_ORD_NU, i, i) + value(PD_ORD_NU, j, j));
+  mean_elastic(i, j, E, nu);
 }
 
 void PairPDOrdinary::init_style()
