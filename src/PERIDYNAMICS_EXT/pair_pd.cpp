@@ -772,24 +772,25 @@ void PairPD::book_released()
 // Book what one evaluation broke: totals on this rank, and the per-atom
 // released energy summed onto owners (only on steps where something broke
 // somewhere, which all ranks learn together).
-void PairPD::account_failure(const pd_failure &f)
+bool PairPD::account_failure(const pd_failure &f)
 {
   law->after_evaluation();
   fresh = f.fresh;    // the core may have grown it
   maxfresh = f.maxfresh;
   if (f.replay) {
     bonds->fracture().rebreak_fresh(bonds->table());   // also those that did not break again (moved atoms)
-    return;
+    return true;
   }
   int mine = f.nbroken > 0, any;
   MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
   if (law->replays_fresh())
     bonds->fracture().note_fresh(bonds->table(), f.fresh, f.nfresh, update->ntimestep, any);
-  if (!any) return;
+  if (!any) return false;
   bonds->fracture().set_has_broken();
   bonds->fracture().add_broken(f.nbroken);
   bonds->fracture().add_dissipated(f.released, f.released_joule);
   book_released();
+  return true;
 }
 
 PDFamilySpec::Weight PairPD::weight_rule() const

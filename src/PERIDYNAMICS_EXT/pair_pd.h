@@ -175,7 +175,8 @@ class PairPD : public Pair, public PDFamilySource {
   bool failing() const;
   pd_failure failure_state();
   pd_loop evaluation(const pd_bond_view &v, pd_tally *t, pd_failure *f) const;
-  void account_failure(const pd_failure &f);
+  // returns whether bonds broke anywhere (or were replayed) in this evaluation
+  bool account_failure(const pd_failure &f);
   double *zero_released();
   void book_released();
   double *released;         // per-atom released energy of one step (owned + ghost)

@@ -17,6 +17,7 @@
 #include "fix_pd_bonds.h"
 #include "force.h"
 #include "memory.h"
+#include "neighbor.h"
 #include "pd_compat.h"
 #include "update.h"
 
@@ -31,12 +32,16 @@ extern "C" {
 
 using namespace LAMMPS_NS;
 
+// doubles per atom of the increment state (a struct of doubles)
+static constexpr int INCREMENT = sizeof(pd_corr_increment) / sizeof(double);
+static_assert(sizeof(pd_corr_increment) == INCREMENT * sizeof(double), "pd_corr_increment holds doubles only");
+
 static const char *const MODEL_NAMES[] = {"elastic", "neohookean", "j2", "johnson_cook"};
 static const int NMODELS = 4;
 
 PairPDCorr::PairPDCorr(LAMMPS *lmp) :
     PairPD(lmp, pd_corr_coefs, PD_CORR_NCOEFS), extended(1), model(-1), influence(-1),
-    stabilization(0.0), thermal(0), damage(0), order(0.0), spring(nullptr), sums(nullptr)
+    stabilization(0.0), order(0.0), spring(nullptr), shape_stale(true)
 {
 }
 
@@ -54,9 +59,6 @@ void PairPDCorr::settings(int narg, char **arg)
   PairPD::settings(narg, arg);
   if (model < 0)
     error->all(FLERR, "Pair pd/corr: 'model' missing: elastic, neohookean, j2 or johnson_cook");
-  if (extended && stabilization > 0.0)
-    error->all(FLERR, "Pair pd/corr: 'stabilization' is for 'strain classical' (extended "
-               "correspondence has no zero-energy modes to suppress)");
 }
 
 int PairPDCorr::parse_setting(int narg, char **arg, int iarg)
@@ -149,17 +151,12 @@ void PairPDCorr::init_style()
     error->all(FLERR, "Pair pd/corr: plane stress needs model elastic (the {} law has no closed "
                "form for its out-of-plane strain); use plane strain", MODEL_NAMES[model]);
   int first = 0;
-  thermal = damage = 0;
   for (int i = 1; i <= atom->ntypes; i++) {
     if (!setflag[i][i]) continue;
     if (!first) first = i;
     if (coef[PD_CORR_M][i][i] != coef[PD_CORR_M][first][first])
       error->all(FLERR, "Pair pd/corr: all types need the same strain order m ({} has {}, {} has {})",
                  i, coef[PD_CORR_M][i][i], first, coef[PD_CORR_M][first][first]);
-    if (model == PD_CORR_JOHNSON_COOK) {
-      thermal |= given(PD_CORR_T_MELT, i, i);
-      damage |= given(PD_CORR_D1, i, i);
-    }
   }
   order = first ? coef[PD_CORR_M][first][first] : 0.0;
   PairPD::init_style();
@@ -172,6 +169,14 @@ PDFamilySpec::Weight PairPDCorr::weight_rule() const
   return [kind, d](double r, double horizon) { return pd_influence(kind, d, r, horizon); };
 }
 
+bool PairPDCorr::any_type_gives(int p) const
+{
+  if (!allocated) return false;
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (setflag[t][t] && given(p, t, t)) return true;
+  return false;
+}
+
 // Only the fields the scene asks for: plastic history with a plastic law,
 // temperature with thermal softening, damage with Johnson-Cook damage.
 std::vector<PDField> PairPDCorr::per_atom_fields() const
@@ -181,24 +186,36 @@ std::vector<PDField> PairPDCorr::per_atom_fields() const
       {"deformation_gradient", 9, PDField::OUTPUT | (stabilization > 0.0 ? PDField::FORWARD : 0)},
       {"stress", 6, PDField::OUTPUT},
       {"corr_tensor", 9, PDField::FORWARD},
-      // the first pass's sums: scratch, summed from ghosts onto owners
-      {"corr_sums", extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL, 0}};
+      // each step's sums, and the family's shape sums (scratch, summed from
+      // ghosts onto owners), and its shape (kept until bonds stop acting)
+      {"corr_sums", extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL, 0},
+      {"corr_shape_sums", extended ? PD_CORR_SHAPE_SUMS_EXTENDED : PD_CORR_SHAPE_SUMS_CLASSICAL, 0},
+      {"corr_shape", PD_CORR_SHAPE, PDField::MIGRATE}};
   if (plastic()) {
     f.push_back({"plastic_strain", 1, kept});
     f.push_back({"plastic_tensor", 6, PDField::MIGRATE | PDField::RESTART});
     f.push_back({"plastic_work", 1, kept});
   }
-  if (thermal) f.push_back({"temperature", 1, kept});
-  if (damage) f.push_back({"jc_damage", 1, kept | PDField::FORWARD});
+  // Johnson-Cook's rate and temperature make a repeated evaluation flow
+  // again: its increment (pd_corr_increment) is kept to repeat it instead
+  if (model == PD_CORR_JOHNSON_COOK) f.push_back({"corr_increment", INCREMENT, PDField::MIGRATE | PDField::RESTART});
+  if (thermal()) f.push_back({"temperature", 1, kept});
+  if (damage()) f.push_back({"jc_damage", 1, kept | PDField::FORWARD});
   return f;
+}
+
+int PairPDCorr::field_index(const char *name) const
+{
+  const std::vector<PDField> f = per_atom_fields();
+  for (size_t k = 0; k < f.size() && k < field_id.size(); k++)
+    if (f[k].name == name) return field_id[k];
+  return -1;
 }
 
 double *PairPDCorr::field(const char *name) const
 {
-  const std::vector<PDField> f = per_atom_fields();
-  for (size_t k = 0; k < f.size() && k < field_id.size(); k++)
-    if (f[k].name == name) return bonds->field(field_id[k]);
-  return nullptr;
+  const int id = field_index(name);
+  return id < 0 ? nullptr : bonds->field(id);
 }
 
 // Per run: each type's law, and the springs of broken bonds in contact.
@@ -237,18 +254,26 @@ void PairPDCorr::setup_run()
     for (int j = 0; j <= ntypes; j++)
       spring[i * (ntypes + 1) + j] = i && j && setflag[i][i] && setflag[j][j] ? contact_micromodulus(i, j) : 0.0;
   fill_reference_vectors();
+  shape_stale = true;
   // a new atom (or a first run) starts at room temperature
-  if (thermal) {
-    double *temp = field("temperature");
+  if (thermal()) {
+    double *temp = field("temperature"), *inc = field("corr_increment");
     for (int i = 0; i < atom->nlocal; i++)
-      if (temp[i] == 0.0) temp[i] = material[atom->type[i]].t_room;
+      if (temp[i] == 0.0) {
+        temp[i] = material[atom->type[i]].t_room;
+        pd_corr_increment start;
+        memcpy(&start, inc + (bigint) INCREMENT * i, sizeof(start));
+        start.start.temperature = temp[i];
+        memcpy(inc + (bigint) INCREMENT * i, &start, sizeof(start));
+      }
   }
 }
 
 PairPDCorr::Fields PairPDCorr::fields() const
 {
-  return {field("deformation_gradient"), field("stress"), field("corr_tensor"), field("plastic_strain"),
-          field("plastic_tensor"), field("plastic_work"), field("temperature"), field("jc_damage")};
+  return {field("deformation_gradient"), field("stress"), field("corr_tensor"), field("corr_sums"),
+          field("corr_shape_sums"), field("corr_shape"), field("plastic_strain"), field("plastic_tensor"),
+          field("plastic_work"), field("temperature"), field("jc_damage"), field("corr_increment")};
 }
 
 // A bond's xi from the reference positions, the nearest periodic image as
@@ -285,14 +310,13 @@ pd_corr_state PairPDCorr::state(const Fields &f)
   st.dim = dim();
   st.order = order;
   st.xi = bonds->history_data();
-  st.sum = sums;
   st.tensor = f.tensor;
   st.defgrad = f.defgrad;
   st.stabilization = stabilization;
   st.spring = spring;
   st.damage = f.damage;
   st.damage_max = 0.0;
-  if (damage) {
+  if (damage()) {
     // D_c is one value: the smallest over the types
     st.damage_max = 1.0;
     for (int t = 1; t <= atom->ntypes; t++)
@@ -316,8 +340,11 @@ void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, pd_t
   if (dmg) h.damage = dmg[i];
   const int ti = atom->type[i];
   pd_corr_atom_out o;
-  const int ok = pd_corr_atom(&st, &material[ti], sums + (bigint) i * width, &h, update->dt,
-                              atom->rmass[i], &o);
+  pd_corr_increment inc;
+  if (f.increment) memcpy(&inc, f.increment + (bigint) INCREMENT * i, sizeof(inc));
+  const int ok = pd_corr_atom(&st, &material[ti], f.sums + (bigint) i * width, f.shape + (bigint) PD_CORR_SHAPE * i,
+                              &h, f.increment ? &inc : nullptr, update->dt, atom->rmass[i], &o);
+  if (f.increment) memcpy(f.increment + (bigint) INCREMENT * i, &inc, sizeof(inc));
   if (ok < 0) {
     // error->one aborts the job: what this rank wrote so far must reach the log
     if (screen) fflush(screen);
@@ -341,6 +368,22 @@ void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, pd_t
   t.energy += o.energy;
 }
 
+// The families' shapes, when bonds may have stopped acting since they were
+// last computed: a new run, bonds broken, reneighboring (lost bonds), and
+// at each step with damage (which switches bonds off).
+void PairPDCorr::update_shapes(const pd_loop &L, pd_corr_state st, const Fields &f)
+{
+  const int nall = atom->nlocal + atom->nghost;
+  const int width = extended ? PD_CORR_SHAPE_SUMS_EXTENDED : PD_CORR_SHAPE_SUMS_CLASSICAL;
+  for (bigint k = 0; k < (bigint) nall * width; k++) f.shape_sums[k] = 0.0;
+  st.sum = f.shape_sums;
+  pd_corr_shape_sums(&L, &st);
+  bonds->sum_to_owners(field_index("corr_shape_sums"));
+  for (int i = 0; i < atom->nlocal; i++)
+    pd_corr_shape(&st, f.shape_sums + (bigint) width * i, f.shape + (bigint) PD_CORR_SHAPE * i);
+  shape_stale = false;
+}
+
 void PairPDCorr::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
@@ -349,16 +392,13 @@ void PairPDCorr::compute(int eflag, int vflag)
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
   const pd_bond_view v = bonds->view();
+  const Fields f = fields();
+  pd_corr_state st = state(f);
   // the damage of both ends decides whether a bond counts: the same values
   // in both passes (the owners' are updated in between)
   std::vector<double> damage_used;
-  const Fields f = fields();
-  sums = field("corr_sums");
-  for (bigint k = 0; k < (bigint) nall * width; k++) sums[k] = 0.0;
-  pd_corr_state st = state(f);
-  const std::vector<PDField> decl = per_atom_fields();
-  if (damage) {
-    bonds->forward(field_id[decl.size() - 1]);    // jc_damage, the last
+  if (damage()) {
+    bonds->forward(field_index("jc_damage"));
     damage_used.assign(st.damage, st.damage + nall);
     st.damage = damage_used.data();
   }
@@ -369,14 +409,19 @@ void PairPDCorr::compute(int eflag, int vflag)
   pd_tally t = {};
   t.eatom = eflag_atom ? eatom : nullptr;
   const pd_loop L = evaluation(v, evflag ? &t : nullptr, fp);
+  // bonds the store dropped as lost leave their families at reneighboring
+  if (shape_stale || damage() || neighbor->ago == 0 || (fp && fp->replay)) update_shapes(L, st, f);
+  for (bigint k = 0; k < (bigint) nall * width; k++) f.sums[k] = 0.0;
+  st.sum = f.sums;
   pd_corr_sums(&L, &st);
-  bonds->sum_to_owners(field_id[3]);    // corr_sums
+  bonds->sum_to_owners(field_index("corr_sums"));
   for (int i = 0; i < nlocal; i++) atom_step(i, st, f, t);
 
-  for (size_t k = 0; k < decl.size(); k++)
-    if (decl[k].flags & PDField::FORWARD && decl[k].name != "jc_damage") bonds->forward(field_id[k]);
+  for (const PDField &decl : per_atom_fields())
+    if (decl.flags & PDField::FORWARD && decl.name != "jc_damage") bonds->forward(field_index(decl.name.c_str()));
   pd_corr_forces(&L, &st);
-  if (fails) account_failure(fail);
+  // bonds that broke leave their families: new shapes next time
+  if (fails && account_failure(fail)) shape_stale = true;
   if (evflag) tally(t);
 }
 

@@ -46,12 +46,12 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   int model;             // pd_corr_model
   int influence;         // pd_influence_kind
   double stabilization;  // classical: coefficient of the non-affine penalty
-  int thermal, damage;   // Johnson-Cook: temperature, damage (from the coefficients)
+
   double order;          // Seth-Hill order m of the strain the law works on
   std::vector<pd_corr_material> material;   // per type
   std::vector<double> complete_volume;      // per type: weighted volume of a complete family
   double *spring;        // per type pair: PMB micromodulus
-  double *sums;          // per atom: the first pass's sums (field corr_sums)
+  bool shape_stale;      // the families' shapes (field corr_shape) need recomputing
 
   int parse_setting(int, char **, int) override;
   void check_coeff(int, int) override;
@@ -70,13 +70,21 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
 
   // the per-atom fields of one evaluation (null: not kept in this scene)
   struct Fields {
-    double *defgrad, *stress, *tensor, *eqps, *plastic, *work, *temperature, *damage;
+    double *defgrad, *stress, *tensor, *sums, *shape_sums, *shape;
+    double *eqps, *plastic, *work, *temperature, *damage, *increment;
   };
   Fields fields() const;
   double *field(const char *name) const;
+  int field_index(const char *name) const;    // its id in the bond store
   int plastic() const { return model == PD_CORR_J2 || model == PD_CORR_JOHNSON_COOK; }
+  // Johnson-Cook options, on when a type gives their constants (known from
+  // pair_coeff on, so compute pd/atom can name their fields before a run)
+  bool any_type_gives(int p) const;
+  bool thermal() const { return model == PD_CORR_JOHNSON_COOK && any_type_gives(PD_CORR_T_MELT); }
+  bool damage() const { return model == PD_CORR_JOHNSON_COOK && any_type_gives(PD_CORR_D1); }
   pd_corr_state state(const Fields &f);
   void atom_step(int i, const pd_corr_state &st, const Fields &f, pd_tally &t);
+  void update_shapes(const pd_loop &L, pd_corr_state st, const Fields &f);
 };
 
 }    // namespace LAMMPS_NS

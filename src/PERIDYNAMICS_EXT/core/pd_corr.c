@@ -67,23 +67,36 @@ bond_sums(void *s, const pd_bond *bd, double eps, double *t, int extended, int d
 {
   const pd_corr_state *st = (const pd_corr_state *) s;
   const double *xi = st->xi + 3 * bd->idx;
-  const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
   if (bd->broken || !alive(st, bd, damaged)) {
+    const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
     for (int c = 0; c < width; c++) t[c] = 0.0;
     return;
   }
   const double w = bd->w;
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) t[3 * r + c] = w * bd->d[r] * xi[c];
+  if (!extended) return;
+  const double we = w * eps / (bd->r0 * bd->r0);
+  t[9] = we * xi[0] * xi[0], t[10] = we * xi[1] * xi[1], t[11] = we * xi[2] * xi[2];
+  t[12] = we * xi[0] * xi[1], t[13] = we * xi[0] * xi[2], t[14] = we * xi[1] * xi[2];
+}
+
+/* The shape sums of one bond, the same at both ends. */
+PD_INLINE void
+bond_shape_sums(void *s, const pd_bond *bd, double eps, double *t, int extended, int damaged)
+{
+  (void) eps;
+  const pd_corr_state *st = (const pd_corr_state *) s;
+  const double *xi = st->xi + 3 * bd->idx;
+  const int width = extended ? PD_CORR_SHAPE_SUMS_EXTENDED : PD_CORR_SHAPE_SUMS_CLASSICAL;
+  for (int c = 0; c < width; c++) t[c] = 0.0;
+  if (bd->broken || !alive(st, bd, damaged)) return;
+  const double w = bd->w;
   t[0] = w * xi[0] * xi[0], t[1] = w * xi[1] * xi[1], t[2] = w * xi[2] * xi[2];
   t[3] = w * xi[0] * xi[1], t[4] = w * xi[0] * xi[2], t[5] = w * xi[1] * xi[2];
-  for (int r = 0; r < 3; r++)
-    for (int c = 0; c < 3; c++) t[6 + 3 * r + c] = w * bd->d[r] * xi[c];
   if (!extended) return;
   const double n[3] = {xi[0] / bd->r0, xi[1] / bd->r0, xi[2] / bd->r0};
-  const double we = w * eps;
-  t[15] = we * n[0] * n[0], t[16] = we * n[1] * n[1], t[17] = we * n[2] * n[2];
-  t[18] = we * n[0] * n[1], t[19] = we * n[0] * n[2], t[20] = we * n[1] * n[2];
-  for (int c = 21; c < 42; c++) t[c] = 0.0;
-  pd_sym4_add_dyad(t + 21, n, w);
+  pd_sym4_add_dyad(t + 6, n, w);
 }
 
 /* n . S . n for a symmetric S (first six of a per-atom tensor) */
@@ -94,55 +107,68 @@ normal_component(const double *s, const double n[3])
       2.0 * (s[3] * n[0] * n[1] + s[4] * n[0] * n[2] + s[5] * n[1] * n[2]);
 }
 
-/* A broken bond in contact (recontact) pushes as a bond-based spring. */
-PD_INLINE pd_bond_force
-contact_spring(const pd_corr_state *st, const pd_bond *bd, int directed)
+/* A broken bond in contact (recontact) pushes as a bond-based spring in
+ * the material's bond strain (extended: Seth-Hill order m, so that for
+ * m <= 0 full collapse costs infinite energy, as for intact bonds), its
+ * force c eps |xi| d eps/d|Y| along the bond. */
+PD_INLINE double
+contact_spring(const pd_corr_state *st, const pd_bond *bd, double eps, int kind)
 {
-  pd_bond_force bf = {0};
-  const double t = st->spring[bd->tij] * (bd->len - bd->r0) / bd->r0;
-  if (!directed) bf.t = t;
-  else if (bd->len > 0.0)
-    for (int c = 0; c < 3; c++) bf.v[c] = t * bd->d[c] / bd->len;
-  return bf;
+  return st->spring[bd->tij] * eps * bd->r0 * pd_bond_strain_rate(kind, st->order, eps, bd);
 }
 
-PD_INLINE pd_bond_force
-classical_force(const pd_corr_state *st, const pd_bond *bd, int damaged)
+/* The stabilization's central force along the bond: G c ((Y - F_avg xi) . e)
+ * / |xi|, the non-affine part of the bond as a bond-based spring. */
+PD_INLINE double
+stabilizing_force(const pd_corr_state *st, const pd_bond *bd, const double *xi)
 {
-  if (bd->broken) return contact_spring(st, bd, 1);
-  pd_bond_force bf = {0};
-  if (!alive(st, bd, damaged)) return bf;
-  const double *xi = st->xi + 3 * bd->idx;
-  const double *ai = st->tensor + 9 * bd->i, *aj = st->tensor + 9 * bd->j;
-  for (int r = 0; r < 3; r++)
-    bf.v[r] = bd->w * ((ai[3 * r] + aj[3 * r]) * xi[0] + (ai[3 * r + 1] + aj[3 * r + 1]) * xi[1] +
-                       (ai[3 * r + 2] + aj[3 * r + 2]) * xi[2]);
-  if (st->stabilization > 0.0 && bd->len > 0.0) {
-    /* the non-affine part of the bond along it: (Y - F_avg xi) . e */
-    const double *fi = st->defgrad + 9 * bd->i, *fj = st->defgrad + 9 * bd->j;
-    double z = 0.0;
-    for (int r = 0; r < 3; r++) {
-      const double fxi = 0.5 * ((fi[3 * r] + fj[3 * r]) * xi[0] + (fi[3 * r + 1] + fj[3 * r + 1]) * xi[1] +
-                                (fi[3 * r + 2] + fj[3 * r + 2]) * xi[2]);
-      z += (bd->d[r] - fxi) * bd->d[r];
-    }
-    const double t = st->stabilization * st->spring[bd->tij] * z / (bd->len * bd->len * bd->r0);
-    for (int r = 0; r < 3; r++) bf.v[r] += t * bd->d[r];
+  if (bd->len <= 0.0) return 0.0;
+  const double *fi = st->defgrad + 9 * bd->i, *fj = st->defgrad + 9 * bd->j;
+  double z = 0.0;
+  for (int r = 0; r < 3; r++) {
+    const double fxi = 0.5 * ((fi[3 * r] + fj[3 * r]) * xi[0] + (fi[3 * r + 1] + fj[3 * r + 1]) * xi[1] +
+                              (fi[3 * r + 2] + fj[3 * r + 2]) * xi[2]);
+    z += (bd->d[r] - fxi) * bd->d[r];
   }
+  return st->stabilization * st->spring[bd->tij] * z / (bd->len * bd->r0);
+}
+
+/* classical: its strain hook gives the stretch (the order-1/2 form) */
+PD_INLINE pd_bond_force
+classical_force(const pd_corr_state *st, const pd_bond *bd, double eps, int damaged)
+{
+  pd_bond_force bf = {0};
+  double t = 0.0;  /* central part, along the bond */
+  if (bd->broken) {
+    t = contact_spring(st, bd, eps, PD_ORDER_HALF);
+  } else if (alive(st, bd, damaged)) {
+    const double *xi = st->xi + 3 * bd->idx;
+    const double *ai = st->tensor + 9 * bd->i, *aj = st->tensor + 9 * bd->j;
+    for (int r = 0; r < 3; r++)
+      bf.v[r] = bd->w * ((ai[3 * r] + aj[3 * r]) * xi[0] + (ai[3 * r + 1] + aj[3 * r + 1]) * xi[1] +
+                         (ai[3 * r + 2] + aj[3 * r + 2]) * xi[2]);
+    if (st->stabilization > 0.0) t = stabilizing_force(st, bd, xi);
+  }
+  if (t != 0.0 && bd->len > 0.0)
+    for (int r = 0; r < 3; r++) bf.v[r] += t * bd->d[r] / bd->len;
   return bf;
 }
 
 PD_INLINE pd_bond_force
 extended_force(const pd_corr_state *st, const pd_bond *bd, double eps, int kind, int damaged)
 {
-  if (bd->broken) return contact_spring(st, bd, 0);
   pd_bond_force bf = {0};
+  if (bd->broken) {
+    bf.t = contact_spring(st, bd, eps, kind);
+    return bf;
+  }
   if (!alive(st, bd, damaged)) return bf;
   const double *xi = st->xi + 3 * bd->idx;
   const double n[3] = {xi[0] / bd->r0, xi[1] / bd->r0, xi[2] / bd->r0};
   const double si = normal_component(st->tensor + 9 * bd->i, n);
   const double sj = normal_component(st->tensor + 9 * bd->j, n);
   bf.t = bd->w * (si + sj) * pd_bond_strain_rate(kind, st->order, eps, bd);
+  if (st->stabilization > 0.0) bf.t += stabilizing_force(st, bd, xi);
   /* the instantaneous bond energy d psi / d phi at each end ('fail energy') */
   bf.release_i = bd->w * eps * si;
   bf.release_j = bd->w * eps * sj;
@@ -168,8 +194,7 @@ static inline double strain_any(void *st, const pd_bond *bd)
 #define CORR_HOOKS(name, DAMAGED)                                                                  \
   static inline pd_bond_force classical_##name(void *st, const pd_bond *bd, double eps)            \
   {                                                                                                \
-    (void) eps;                                                                                    \
-    return classical_force((const pd_corr_state *) st, bd, DAMAGED);                               \
+    return classical_force((const pd_corr_state *) st, bd, eps, DAMAGED);                          \
   }                                                                                                \
   static inline pd_bond_force log_##name(void *st, const pd_bond *bd, double eps)                  \
   {                                                                                                \
@@ -186,6 +211,14 @@ static inline double strain_any(void *st, const pd_bond *bd)
   static inline void extended_sums_##name(void *st, const pd_bond *bd, double eps, double *t)      \
   {                                                                                                \
     bond_sums(st, bd, eps, t, 1, DAMAGED);                                                         \
+  }                                                                                                \
+  static inline void classical_shape_##name(void *st, const pd_bond *bd, double eps, double *t)    \
+  {                                                                                                \
+    bond_shape_sums(st, bd, eps, t, 0, DAMAGED);                                                   \
+  }                                                                                                \
+  static inline void extended_shape_##name(void *st, const pd_bond *bd, double eps, double *t)     \
+  {                                                                                                \
+    bond_shape_sums(st, bd, eps, t, 1, DAMAGED);                                                   \
   }
 CORR_HOOKS(intact, 0)
 CORR_HOOKS(damaged, 1)
@@ -229,6 +262,19 @@ void pd_corr_sums(const pd_loop *L, const pd_corr_state *st)
   }
 }
 
+/* not every step: one copy serves all (the bond's strain is not used) */
+void pd_corr_shape_sums(const pd_loop *L, const pd_corr_state *st)
+{
+  const int failing = L->fail != NULL;
+  if (st->extended) {
+    if (st->damage) SUMS(PD_CORR_SHAPE_SUMS_EXTENDED, stretch, extended_shape_damaged, failing);
+    else SUMS(PD_CORR_SHAPE_SUMS_EXTENDED, stretch, extended_shape_intact, failing);
+  } else {
+    if (st->damage) SUMS(PD_CORR_SHAPE_SUMS_CLASSICAL, stretch, classical_shape_damaged, failing);
+    else SUMS(PD_CORR_SHAPE_SUMS_CLASSICAL, stretch, classical_shape_intact, failing);
+  }
+}
+
 /* ---- per atom ----------------------------------------------------------- */
 
 /* The strain of order m of C = F^T F; its principal frame in (c, q).
@@ -248,39 +294,48 @@ static void lagrangian_strain(double m, const double F[9], double E[6], double c
   pd_sym_from_eigen(e, q, E);
 }
 
-int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const double *sum,
-                 pd_corr_history *h, double dt, double rho, pd_corr_atom_out *o)
+
+int pd_corr_shape(const pd_corr_state *st, const double *shape_sum, double *shape)
 {
-  memset(o, 0, sizeof(*o));
-  double K[9], Kinv[9], N[9];
-  pd_sym_to_full(sum, K);
-  memcpy(N, sum + 6, sizeof(N));
-  if (st->dim == 2) {
-    /* a plane family: F_33 = 1 (the plane-strain kinematics; a plane
-     * stress law sets its own E_33), at the family's own scale */
-    K[8] = N[8] = 0.5 * (K[0] + K[4]);
-  }
-  /* a family flattened by broken or damaged bonds (its shape tensor's
-   * smallest principal value below PD_CORR_FLAT of its largest; a
-   * corner's complete family is about 0.3) gives no strain: its inverse
-   * would turn round-off into force */
-  double kl[3], kq[9], ks[6];
+  memset(shape, 0, PD_CORR_SHAPE * sizeof(double));
+  double K[9], kl[3], kq[9], ks[6];
+  pd_sym_to_full(shape_sum, K);
+  /* a plane family: K_33 at the family's own scale (pd_corr_atom sets
+   * N_33 to match: F_33 = 1) */
+  if (st->dim == 2) K[8] = 0.5 * (K[0] + K[4]);
   pd_full_to_sym(K, ks);
   pd_sym_eigen(ks, kl, kq);
   const double kmax = fmax(kl[0], fmax(kl[1], kl[2])), kmin = fmin(kl[0], fmin(kl[1], kl[2]));
   if (!(kmin > PD_CORR_FLAT * kmax)) return 0;
-  pd_inverse3(K, Kinv, 0.0);
+  if (st->extended) {
+    memcpy(shape + 9, shape_sum + 6, PD_SYM4 * sizeof(double));
+    if (!pd_sym4_invert(shape + 9, st->dim)) return 0;
+  }
+  pd_inverse3(K, shape, 0.0);
+  return 1;
+}
+
+int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const double *sum,
+                 const double *shape, pd_corr_history *h, pd_corr_increment *inc, double dt,
+                 double rho, pd_corr_atom_out *o)
+{
+  memset(o, 0, sizeof(*o));
+  const double *Kinv = shape, *M = shape + 9;
+  if (Kinv[0] == 0.0 && Kinv[4] == 0.0) return 0;  /* a flat family */
+  double N[9];
+  memcpy(N, sum, sizeof(N));
+  /* 2D: F_33 = 1 (plane strain kinematics; a plane stress law sets its own
+   * E_33) */
+  if (st->dim == 2) N[8] = 1.0 / Kinv[8];
   pd_mat_mul(N, Kinv, o->F);
 
   double E[6], c[3], q[9];
-  double M[PD_SYM4];
   if (st->extended) {
-    memcpy(M, sum + 21, sizeof(M));
-    if (!pd_sym4_invert(M, st->dim)) return 0;
-    pd_sym4_apply(M, sum + 15, E);
+    pd_sym4_apply(M, sum + 9, E);
   } else {
     lagrangian_strain(st->order, o->F, E, c, q);
   }
+  if (inc) pd_corr_increment_enter(inc, E, h);
   pd_corr_stress s;
   if (!pd_corr_law_stress(mat, st->order, E, h, dt, rho, &s)) return -1;
   o->energy = s.energy;

@@ -3,10 +3,7 @@
  *
  * classical (T14 eq. 2.6-2.10): K = sum w xi (x) xi V, F = [sum w Y (x) xi V] K^-1;
  *   the law's stress at F gives P and A = P K^-1 per atom; a bond's force
- *   per V_i V_j is w (A_i + A_j) xi (not along the bond). Optional
- *   stabilization: a central force G c ((Y - F_avg xi) . e)/|xi| on the
- *   non-affine part of each bond (Littlewood 2010's hourglass control; c the
- *   PMB micromodulus of the material, G the user's coefficient).
+ *   per V_i V_j is w (A_i + A_j) xi (not along the bond).
  * extended (T14 eq. 4.3-4.7): E_m = M^-1 : sum w eps_m (n (x) n) V with
  *   n = xi/|xi| and M = sum w (n (x) n) (x) (n (x) n) V, the family's
  *   fourth moment. In the continuum (isotropic M, sum w V = d) M^-1 : n (x) n
@@ -16,6 +13,9 @@
  *   With Sigma = M^-1 : T per atom (T conjugate to E_m), a bond's force
  *   state is t = w (n . (Sigma_i + Sigma_j) . n) d eps_m / d|Y| along the
  *   bond (T14 eq. 4.7).
+ * Optional stabilization (both strains): a central force G c ((Y - F_avg xi)
+ * . e)/|xi| on the non-affine part of each bond (Littlewood 2010's hourglass
+ * control; c the PMB micromodulus of the material, G the user's coefficient).
  * Damage through the influence function (T14 eq. 7.1-7.2): a bond with an
  * end whose damage exceeds D_c neither counts in the sums nor acts. */
 #ifndef PD_CORR_H
@@ -54,9 +54,15 @@ enum {
 };
 extern const pd_coef pd_corr_coefs[PD_CORR_NCOEFS];
 
-/* The per-atom sums of the first pass: K (6, symmetric), N = sum w Y (x) xi V
- * (9); extended adds G = sum w eps (n (x) n) V (6) and M (21). */
-enum { PD_CORR_SUMS_CLASSICAL = 15, PD_CORR_SUMS_EXTENDED = 42 };
+/* The per-atom sums of each step's first pass: N = sum w Y (x) xi V (9);
+ * extended adds G = sum w eps (n (x) n) V (6). */
+enum { PD_CORR_SUMS_CLASSICAL = 9, PD_CORR_SUMS_EXTENDED = 15 };
+/* The sums of the family's shape, which change only when bonds stop
+ * acting: K = sum w xi (x) xi V (6, symmetric); extended adds M (21). */
+enum { PD_CORR_SHAPE_SUMS_CLASSICAL = 6, PD_CORR_SHAPE_SUMS_EXTENDED = 27 };
+/* An atom's shape from those: K^-1 (9) and M^-1 (21; extended), all zero
+ * for a family too flat to give a strain (pd_corr_shape). */
+enum { PD_CORR_SHAPE = 30 };
 
 typedef struct pd_corr_state {
   int extended;           /* 1: extended, 0: classical */
@@ -74,8 +80,22 @@ typedef struct pd_corr_state {
   double damage_max;      /* D_c */
 } pd_corr_state;
 
-/* First pass: the sums of every atom (owned + ghost; the caller zeroes
- * st->sum, width PD_CORR_SUMS_*, and sums the ghosts' share onto owners). */
+/* The shape sums of every atom (owned + ghost; the caller zeroes st->sum,
+ * width PD_CORR_SHAPE_SUMS_*, and sums the ghosts' share onto owners):
+ * once, and again after bonds stopped acting. */
+void pd_corr_shape_sums(const pd_loop *L, const pd_corr_state *st);
+
+/* An atom's shape (PD_CORR_SHAPE numbers) from its shape sums. Returns 1;
+ * 0 when the family is too flat to give a strain (no bonds left, or its
+ * shape tensor's smallest principal value below PD_CORR_FLAT times its
+ * largest; a corner's complete family is about 0.3): shape all zero, the
+ * atom carries no stress. */
+#define PD_CORR_FLAT 0.1
+int pd_corr_shape(const pd_corr_state *st, const double *shape_sum, double *shape);
+
+/* Each step's first pass: the sums of every atom (owned + ghost; the caller
+ * zeroes st->sum, width PD_CORR_SUMS_*, and sums the ghosts' share onto
+ * owners). */
 void pd_corr_sums(const pd_loop *L, const pd_corr_state *st);
 
 /* Second pass: forces, and with a tally the virial (the energy is per atom:
@@ -83,19 +103,18 @@ void pd_corr_sums(const pd_loop *L, const pd_corr_state *st);
 void pd_corr_forces(const pd_loop *L, const pd_corr_state *st);
 
 /* One atom: from its sums to its deformation gradient, strain, stress (the
- * law advances h) and the tensor its bonds need. */
+ * law advances h; with inc, an evaluation at the same strain repeats the
+ * increment, see pd_corr_increment) and the tensor its bonds need. */
 typedef struct pd_corr_atom_out {
   double F[9];
   double tensor[9];   /* A = P K^-1 (classical) or Sigma = M^-1 : T (extended) */
   double stress[6];   /* Cauchy stress */
   double energy;      /* stored energy density */
 } pd_corr_atom_out;
-/* Returns 1; 0 when the family is too flat to give a strain (no bonds left,
- * or its shape tensor's smallest principal value below PD_CORR_FLAT times
- * its largest: everything zero, the atom carries no stress) and -1 when the
- * law rejects the state (out undefined). */
-#define PD_CORR_FLAT 0.1
+/* Returns 1; 0 for a flat family (its shape zero: out all zero) and -1
+ * when the law rejects the state (out undefined). */
 int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const double *sum,
-                 pd_corr_history *h, double dt, double rho, pd_corr_atom_out *out);
+                 const double *shape, pd_corr_history *h, pd_corr_increment *inc, double dt,
+                 double rho, pd_corr_atom_out *out);
 
 #endif

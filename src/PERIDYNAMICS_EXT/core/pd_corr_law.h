@@ -44,6 +44,20 @@ typedef struct pd_corr_history {
   double plastic_work; /* plastic work density dissipated so far */
 } pd_corr_history;
 
+/* The increment an atom is in: its history at the increment's start and
+ * the strain it was last evaluated at. An evaluation at that strain again
+ * (within 1e-12) repeats the increment from its start instead of adding
+ * one: LAMMPS evaluates the forces again at unchanged positions when a run
+ * starts, and a rate- or temperature-dependent return would flow again. */
+typedef struct pd_corr_increment {
+  pd_corr_history start;
+  double strain[6];
+} pd_corr_increment;
+
+/* Begin a new increment at strain E, or go back to the start of the
+ * current one when E is the strain it was last evaluated at. */
+void pd_corr_increment_enter(pd_corr_increment *inc, const double E[6], pd_corr_history *h);
+
 typedef struct pd_corr_stress {
   double T[6];         /* stress conjugate to E */
   double energy;       /* stored (elastic) energy density */
