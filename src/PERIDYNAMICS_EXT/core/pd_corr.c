@@ -182,6 +182,8 @@ static inline double stretch(void *st, const pd_bond *bd)
   (void) st;
   return (bd->len - bd->r0) / bd->r0;
 }
+/* (a kernel that needs no bond energy drops the strain's log: only the
+ * energies and the failure laws read it) */
 static inline double strain_log(void *st, const pd_bond *bd)
 {
   return pd_bond_strain(PD_ORDER_LOG, ((const pd_corr_state *) st)->order, bd);
@@ -204,19 +206,19 @@ static inline double strain_any(void *st, const pd_bond *bd)
   {                                                                                                \
     return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_ANY, DAMAGED);             \
   }                                                                                                \
-  static inline void classical_sums_##name(void *st, const pd_bond *bd, double eps, double *t)     \
+  PD_INLINE void classical_sums_##name(void *st, const pd_bond *bd, double eps, double *t)     \
   {                                                                                                \
     bond_sums(st, bd, eps, t, 0, DAMAGED);                                                         \
   }                                                                                                \
-  static inline void extended_sums_##name(void *st, const pd_bond *bd, double eps, double *t)      \
+  PD_INLINE void extended_sums_##name(void *st, const pd_bond *bd, double eps, double *t)      \
   {                                                                                                \
     bond_sums(st, bd, eps, t, 1, DAMAGED);                                                         \
   }                                                                                                \
-  static inline void classical_shape_##name(void *st, const pd_bond *bd, double eps, double *t)    \
+  PD_INLINE void classical_shape_##name(void *st, const pd_bond *bd, double eps, double *t)    \
   {                                                                                                \
     bond_shape_sums(st, bd, eps, t, 0, DAMAGED);                                                   \
   }                                                                                                \
-  static inline void extended_shape_##name(void *st, const pd_bond *bd, double eps, double *t)     \
+  PD_INLINE void extended_shape_##name(void *st, const pd_bond *bd, double eps, double *t)     \
   {                                                                                                \
     bond_shape_sums(st, bd, eps, t, 1, DAMAGED);                                                   \
   }
