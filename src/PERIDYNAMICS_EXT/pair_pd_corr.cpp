@@ -19,6 +19,7 @@
 #include "memory.h"
 #include "neighbor.h"
 #include "pd_compat.h"
+#include "pd_fracture_record.h"
 #include "update.h"
 
 #include <cmath>
@@ -360,6 +361,11 @@ void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, pd_t
   if (ep) {
     for (int k = 0; k < 6; k++) ep[6 * i + k] = h.plastic[k];
     eqps[i] = h.eqps;
+    // the plastic work is dissipated energy, booked with that of broken
+    // bonds (compute pd/fracture, compute pd/atom dissipated)
+    const double dw = h.plastic_work - wp[i];
+    bonds->dissipated_atom()[i] += dw;
+    bonds->fracture().add_dissipated(dw, dw * atom->vfrac[i]);
     wp[i] = h.plastic_work;
   }
   if (temp) temp[i] = h.temperature;
