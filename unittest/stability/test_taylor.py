@@ -1,6 +1,6 @@
 """Stability: the Taylor impact of T14 3.1.1 (examples/taylor-impact) at a
 coarse resolution, 1 mm (1221 particles, 3.2 per radius), 80 microseconds,
-both strains of pd/corr (about 40 s of CPU).
+both strains of pd/corr (20-40 s of CPU).
 
 Measured at this resolution (80 us), at T14's D2 resolution (0.395 mm,
 examples/taylor-impact/README.md) and by T14 (Table 3.2; final state):
