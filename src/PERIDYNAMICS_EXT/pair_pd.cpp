@@ -812,6 +812,20 @@ void PairPD::declare_fields()
   for (const PDField &f : per_atom_fields()) field_id.push_back(bonds->add_field(f));
 }
 
+// (under hybrid, the types of other sub-styles have no value here)
+double PairPD::shared_value(int p, double none)
+{
+  int first = 0;
+  for (int i = 1; i <= atom->ntypes; i++) {
+    if (!setflag[i][i]) continue;
+    if (!first) first = i;
+    if (coef[p][i][i] != coef[p][first][first])
+      error->all(FLERR, "Pair {}: all types need the same {} ({} has {}, {} has {})", style_name(),
+                 describe(decl[p]), i, coef[p][i][i], first, coef[p][first][first]);
+  }
+  return first ? coef[p][first][first] : none;
+}
+
 std::vector<double> PairPD::complete_family_volumes() const
 {
   const int n = atom->ntypes + 1;

@@ -164,6 +164,10 @@ class PairPD : public Pair, public PDFamilySource {
   std::string law_usages(int col) const;           // the laws that take column col, for messages
   void select_law();
   void grow_work();
+  // the value of column p that every type of this style shares (a
+  // material's strain order m): an ERROR if two types differ; 'none' when
+  // the style has no type
+  double shared_value(int p, double none);
   // per type: the weighted volume of a complete family, the largest over
   // the type's atoms (an interior atom's); 0 for a type without atoms
   std::vector<double> complete_family_volumes() const;

@@ -151,15 +151,7 @@ void PairPDCorr::init_style()
   if (model_dim == PD_PLANE_STRESS && model != PD_CORR_ELASTIC)
     error->all(FLERR, "Pair pd/corr: plane stress needs model elastic (the {} law has no closed "
                "form for its out-of-plane strain); use plane strain", MODEL_NAMES[model]);
-  int first = 0;
-  for (int i = 1; i <= atom->ntypes; i++) {
-    if (!setflag[i][i]) continue;
-    if (!first) first = i;
-    if (coef[PD_CORR_M][i][i] != coef[PD_CORR_M][first][first])
-      error->all(FLERR, "Pair pd/corr: all types need the same strain order m ({} has {}, {} has {})",
-                 i, coef[PD_CORR_M][i][i], first, coef[PD_CORR_M][first][first]);
-  }
-  order = first ? coef[PD_CORR_M][first][first] : 0.0;
+  order = shared_value(PD_CORR_M, 0.0);
   PairPD::init_style();
 }
 

@@ -103,17 +103,7 @@ void PairPDOrdinary::init_style()
     per_atom_norm = 1;
     if (dim() != 3) error->all(FLERR, "Pair pd/ordinary legacy reproduces peri/lps, which is 3D");
   }
-  // the types this style handles (under hybrid, others may belong to
-  // another sub-style and have no order here)
-  int first = 0;
-  for (int i = 1; i <= atom->ntypes; i++) {
-    if (!setflag[i][i]) continue;
-    if (!first) first = i;
-    if (coef[PD_ORD_M][i][i] != coef[PD_ORD_M][first][first])
-      error->all(FLERR, "Pair pd/ordinary: all types need the same strain order m ({} has {}, {} has {})",
-                 i, coef[PD_ORD_M][i][i], first, coef[PD_ORD_M][first][first]);
-  }
-  order = first ? coef[PD_ORD_M][first][first] : 0.5;
+  order = shared_value(PD_ORD_M, 0.5);
   if (legacy && order != 0.5)
     error->all(FLERR, "Pair pd/ordinary legacy reproduces peri/lps, which is m = 0.5 (got {})", order);
   PairPD::init_style();

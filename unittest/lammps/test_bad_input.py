@@ -60,6 +60,10 @@ cases = [
      "'fail energy' needs a material with per-bond energies"),
     ("energy law on classical correspondence", block(6) + f"pair_style pd/corr strain classical model elastic\npair_coeff * * E 1e9 nu 0.3 horizon {H} fail energy Gc 10\n",
      "'fail energy' needs a material with per-bond energies"),
+    ("pd/corr: two types with different m", block(6).replace("create_box 1 box", "create_box 2 box") +
+     f"set type 1 type/fraction 2 0.5 1\npair_style pd/corr model elastic\n"
+     f"pair_coeff 1 1 E 1e9 nu 0.3 horizon {H} m 0\npair_coeff 2 2 E 1e9 nu 0.3 horizon {H} m -1\nrun 0\n",
+     "all types need the same strain order m"),
     ("pd/corr without a model", block(6) + f"pair_style pd/corr\npair_coeff * * E 1e9 nu 0.3 horizon {H}\n",
      "'model' missing"),
     ("pd/corr model elastic given a yield stress", block(6) + f"pair_style pd/corr model elastic\npair_coeff * * E 1e9 nu 0.3 horizon {H} yield 1e6\n",
