@@ -45,8 +45,7 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   int extended;          // strain: 1 extended (T14 4.2), 0 classical (T14 2.2.1)
   int model;             // pd_corr_model
   int influence;         // pd_influence_kind
-  double stabilization;  // classical: coefficient of the non-affine penalty
-
+  double stabilization;  // coefficient of the non-affine penalty (0: none)
   double order;          // Seth-Hill order m of the strain the law works on
   std::vector<pd_corr_material> material;   // per type
   std::vector<double> complete_volume;      // per type: weighted volume of a complete family
