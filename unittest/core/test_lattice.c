@@ -237,6 +237,12 @@ static void limits(void)
   me = long_waves("ordinary sc 3h inverse", &m, &f, PD_3D, &e3, d3, 0.00296, -0.00515, 1e-3);
   check_rel("ordinary sc 3h inverse: dilatation exact", me.dilatation, 0.0, 1e-12);
   pd_family_free(&f);
+  /* the one-call form a setup report uses gives the same */
+  pd_moduli_error one;
+  pd_lattice_expected_error(&sc, PD_LINEAR_ORDINARY, PD_3D, &e3, d3, d3, 1.0, pd_influence_weight_fn, &iw, &one);
+  check_rel("pd_lattice_expected_error: ordinary sc 3h inverse, shear xx=-yy", one.shear_xx_yy, me.shear_xx_yy, 1e-14);
+  pd_lattice_expected_error(&sc, PD_LINEAR_PMB, PD_3D, &e3, d3, d3, 1.0, NULL, NULL, &one);
+  check_rel("pd_lattice_expected_error: PMB sc 3h, dilatation (+12.1%)", one.dilatation, pmb3.dilatation, 1e-12);
 
   /* 2D plane stress, square, constant influence (the 2D default): shears
    * +-6.3% (issue 12's measurement), speeds along x +1.0%, -3.2% */

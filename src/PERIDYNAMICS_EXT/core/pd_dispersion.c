@@ -178,3 +178,29 @@ pd_moduli_error pd_moduli_error_of(const double C[PD_SYM4], const double Cref[PD
   e.worst = fmax(fabs(e.dilatation), fmax(fabs(e.shear_xx_yy), fabs(e.shear_xy)));
   return e;
 }
+
+int pd_lattice_expected_error(const pd_lattice *lat, pd_linear_kind model, pd_dimension dim,
+                              const pd_elastic *e, double horizon, double cutoff, double thickness,
+                              pd_weight_fn weight, void *ctx, pd_moduli_error *out)
+{
+  const pd_moduli_error none = {NAN, NAN, NAN, NAN};
+  *out = none;
+  pd_family f;
+  if (model == PD_LINEAR_CLASSICAL || pd_lattice_family(lat, cutoff, thickness, weight, ctx, &f) < 1)
+    return -1;
+  pd_elastic ref = *e;
+  pd_linear_model m;
+  if (model == PD_LINEAR_PMB) {
+    pd_elastic_from_E_nu(e->E, pd_pmb_poisson(dim), &ref);
+    m = pd_linear_pmb_E(dim, e->E, horizon, thickness);
+  } else {
+    m = pd_linear_ordinary(dim, e, &f);
+  }
+  const pd_linear_model cl = pd_linear_classical(dim, &ref);
+  double C[PD_SYM4], Cref[PD_SYM4];
+  pd_effective_tensor(&m, &f, C);
+  pd_effective_tensor(&cl, NULL, Cref);
+  *out = pd_moduli_error_of(C, Cref, lat->dim);
+  pd_family_free(&f);
+  return 0;
+}

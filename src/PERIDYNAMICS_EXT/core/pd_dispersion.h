@@ -75,4 +75,15 @@ typedef struct pd_moduli_error {
 } pd_moduli_error;
 pd_moduli_error pd_moduli_error_of(const double C[PD_SYM4], const double Cref[PD_SYM4], int dim);
 
+/* The expected lattice error of the constants, for a style's setup report
+ * and the accuracy report: the family of a site of 'lat' within 'cutoff'
+ * (the horizon, or farther for partial cells) with the style's bond
+ * weights, the model set up as the style sets it up (PMB: c from E with
+ * bond-based elasticity's nu, against the classical solid of that E and
+ * nu; ordinary: from e, against e), its effective tensor against the
+ * classical one. Returns 0, or -1 (no bond, no memory; out->worst NaN). */
+int pd_lattice_expected_error(const pd_lattice *lat, pd_linear_kind model, pd_dimension dim,
+                              const pd_elastic *e, double horizon, double cutoff, double thickness,
+                              pd_weight_fn weight, void *ctx, pd_moduli_error *out);
+
 #endif

@@ -75,12 +75,12 @@ double pd_influence_weight_fn(const double xi[3], double r, void *ctx)
   return pd_influence(w->kind, w->dim, r, w->horizon);
 }
 
-/* Walk the grid offsets within the horizon; store them when 'out' is set.
- * Returns the count. */
-static int walk(const pd_lattice *lat, double horizon, pd_weight_fn weight, void *ctx,
+/* Walk the grid offsets within the cutoff, with their weights (bonds of
+ * weight 0 left out); store them when 'out' is set. Returns the count. */
+static int walk(const pd_lattice *lat, double cutoff, pd_weight_fn weight, void *ctx,
                 pd_family_bond *out)
 {
-  const double reach = horizon * (1.0 + 1e-12);
+  const double reach = cutoff * (1.0 + 1e-12);
   int lim[3] = {0, 0, 0};
   for (int d = 0; d < lat->dim; d++) lim[d] = (int) floor(reach / lat->h[d]);
   int n = 0;
@@ -92,11 +92,13 @@ static int walk(const pd_lattice *lat, double horizon, pd_weight_fn weight, void
         const double xi[3] = {i * lat->h[0], j * lat->h[1], k * lat->h[2]};
         const double r = sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
         if (r > reach) continue;
+        const double w = weight ? weight(xi, r, ctx) : 1.0;
+        if (w == 0.0) continue;
         if (out) {
           pd_family_bond *b = out + n;
           memcpy(b->xi, xi, sizeof(xi));
           b->r = r;
-          b->w = weight ? weight(xi, r, ctx) : 1.0;
+          b->w = w;
           b->p[0] = i, b->p[1] = j, b->p[2] = k;
         }
         n++;
@@ -104,15 +106,15 @@ static int walk(const pd_lattice *lat, double horizon, pd_weight_fn weight, void
   return n;
 }
 
-int pd_lattice_family(const pd_lattice *lat, double horizon, double thickness, pd_weight_fn weight,
+int pd_lattice_family(const pd_lattice *lat, double cutoff, double thickness, pd_weight_fn weight,
                       void *ctx, pd_family *out)
 {
   memset(out, 0, sizeof(*out));
-  if (!lat || !(horizon > 0.0) || !(lat->a > 0.0)) return -1;
-  const int n = walk(lat, horizon, NULL, NULL, NULL);
+  if (!lat || !(cutoff > 0.0) || !(lat->a > 0.0)) return -1;
+  const int n = walk(lat, cutoff, weight, ctx, NULL);
   out->bond = malloc((n ? n : 1) * sizeof(pd_family_bond));
   if (!out->bond) return -1;
-  walk(lat, horizon, weight, ctx, out->bond);
+  walk(lat, cutoff, weight, ctx, out->bond);
   out->n = n;
   out->dim = lat->dim;
   out->volume = lat->volume * (lat->dim == 2 && thickness > 0.0 ? thickness : 1.0);

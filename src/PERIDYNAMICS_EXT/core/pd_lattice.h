@@ -59,10 +59,13 @@ typedef struct pd_family_bond {
   int p[3];     /* xi in grid steps */
 } pd_family_bond;
 
-/* The family of one site: every site with 0 < |xi| <= horizon (as fix
- * pd/bonds takes them, r <= horizon; a site on the horizon to within
- * 1e-12 relative counts, so that round-off in a product like 3 * a does
- * not decide), in +-pairs, and the volume of every partner. */
+/* The family of one site: every site with 0 < |xi| <= cutoff (as fix
+ * pd/bonds takes them, r <= horizon; a site on the cutoff to within 1e-12
+ * relative counts, so that round-off in a product like 3 * a does not
+ * decide), in +-pairs, and the volume of every partner. The cutoff is the
+ * horizon, or farther for a quadrature whose cells reach past it (the
+ * weight function then knows the horizon); a bond whose weight is 0 is
+ * left out (it adds nothing to any sum). */
 typedef struct pd_family {
   int dim, n;
   double volume;       /* partner volume: site volume (x thickness in 2D) */
@@ -70,10 +73,10 @@ typedef struct pd_family {
 } pd_family;
 
 /* Build the family (allocates bond; free with pd_family_free). weight may be
- * NULL (every weight 1). thickness multiplies the site volume in 2D (the
+ * NULL (every weight 1, no bond left out). thickness multiplies the site volume in 2D (the
  * volume LAMMPS's 2D atoms carry), ignored otherwise. Returns the number of
  * bonds, or -1 (bad arguments, no memory). */
-int pd_lattice_family(const pd_lattice *lat, double horizon, double thickness, pd_weight_fn weight,
+int pd_lattice_family(const pd_lattice *lat, double cutoff, double thickness, pd_weight_fn weight,
                       void *ctx, pd_family *out);
 void pd_family_free(pd_family *f);
 
