@@ -21,9 +21,10 @@ spacing (m; the cube root of the volume per particle in 3D, the square
 root of the area per particle in 2D, as the package's own spacing check),
 influence (pd/ordinary), dt_fraction (of the package's stable-step
 estimate, MS07 eq. 43), order (strain order m, pd/ordinary), quadrature
-(None: the package's default; other values are passed to the pair style,
-and to pd_exact, which refuses weights it cannot reproduce: time_error is
-then NaN), seed (of the random field).
+(None: the package's default; 'point' or 'partial' go to the pair style
+and to pd_exact, which reproduces partial cells when built with
+core/pd_quadrature), seed (of the random field). A run that fails (LAMMPS
+or pd_exact refusing a setting) raises RuntimeError naming the input.
 """
 import math
 import os

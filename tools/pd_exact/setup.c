@@ -3,6 +3,10 @@
 #include <math.h>
 #include <string.h>
 
+#ifdef PDEXT_HAVE_QUADRATURE
+#include "pd_quadrature.h"
+#endif
+
 #define GIVEN(x) (!isnan(x))
 
 static int fail(FILE *err, const char *msg)
@@ -20,6 +24,29 @@ static int elastic(const exact_input *in, pd_dimension pdim, pd_elastic *e, FILE
   if (GIVEN(in->E)) return pd_elastic_from_E_nu(in->E, nu, e) ? fail(err, "E, nu: not a stable material") : 0;
   if (GIVEN(in->K)) return pd_elastic_from_E_nu(3.0 * in->K * (1.0 - 2.0 * nu), nu, e) ? fail(err, "K: not a stable material") : 0;
   return fail(err, "give K and G, or E and nu (or K or E alone for the PMB's Poisson ratio)");
+}
+
+/* A bond's weight as the pair styles give it: pd/ordinary's influence at
+ * min(r, horizon) (bonds past the horizon come only with partial cells),
+ * times the share of the partner's cell inside the horizon with
+ * 'quadrature partial' (a cube or square of the particle's volume, as the
+ * styles take it; core/pd_quadrature). */
+typedef struct weight_ctx {
+  pd_influence_weight iw;
+  int ordinary, partial, dim;
+  double cell;
+} weight_ctx;
+
+static double bond_weight(const double xi[3], double r, void *ctx)
+{
+  const weight_ctx *c = (const weight_ctx *) ctx;
+  double w = c->ordinary ? pd_influence(c->iw.kind, c->iw.dim, fmin(r, c->iw.horizon), c->iw.horizon) : 1.0;
+#ifdef PDEXT_HAVE_QUADRATURE
+  if (c->partial) w *= pd_cell_fraction(c->dim, xi, c->cell, c->iw.horizon);
+#else
+  (void) xi;
+#endif
+  return w;
 }
 
 static int pmb(const exact_input *in, exact_problem *p, FILE *err)
@@ -65,15 +92,26 @@ int exact_setup(const exact_input *in, exact_problem *p, FILE *err)
   if (!classical && !(in->horizon > 0.0)) return fail(err, "horizon must be positive");
 
   /* influence: pd/ordinary's default, 1/|xi| in 3D and constant in 2D */
-  pd_influence_weight iw = {d == 3 ? PD_INFLUENCE_INVERSE : PD_INFLUENCE_CONSTANT, d == 3 ? 3 : 2, in->horizon};
+  weight_ctx wc = {{d == 3 ? PD_INFLUENCE_INVERSE : PD_INFLUENCE_CONSTANT, d == 3 ? 3 : 2, in->horizon},
+                   strcmp(in->model, "ordinary") == 0, 0, d, 0.0};
   if (in->influence[0]) {
     const int k = pd_influence_from_name(in->influence);
     if (k < 0) return fail(err, "unknown influence function");
-    iw.kind = (pd_influence_kind) k;
+    wc.iw.kind = (pd_influence_kind) k;
   }
-  const int ordinary = strcmp(in->model, "ordinary") == 0;
-  if (!classical && pd_lattice_family(&p->lat, in->horizon, in->thickness,
-                                      ordinary ? pd_influence_weight_fn : NULL, &iw, &p->fam) < 1)
+  double cutoff = in->horizon;
+  if (in->quadrature[0] && strcmp(in->quadrature, "point") != 0) {
+    if (strcmp(in->quadrature, "partial") != 0) return fail(err, "quadrature: expected point or partial");
+#ifdef PDEXT_HAVE_QUADRATURE
+    wc.partial = 1;
+    wc.cell = d == 3 ? cbrt(p->lat.volume) : d == 2 ? sqrt(p->lat.volume) : p->lat.volume;
+    cutoff += pd_cell_reach(d, wc.cell);
+#else
+    return fail(err, "quadrature partial: this build has no core/pd_quadrature");
+#endif
+  }
+  const int ordinary = wc.ordinary;
+  if (!classical && pd_lattice_family(&p->lat, cutoff, in->thickness, bond_weight, &wc, &p->fam) < 1)
     return fail(err, "the horizon holds no bond");
 
   pd_elastic e;
