@@ -9,7 +9,6 @@
 #include "pd_dispersion.h"
 
 #include <stdlib.h>
-#include <string.h>
 
 static const double H = 5e-4, RHO = 2200.0, K = 14.9e9, G = 7.0e9;
 

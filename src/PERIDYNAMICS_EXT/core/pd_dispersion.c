@@ -94,11 +94,6 @@ static void add_outer(double C[PD_SYM4], const double v[6], double w)
     for (int c = r; c < 6; c++) C[p++] += w * v[r] * v[c];
 }
 
-static void mandel_of(const double s[6], double v[6])
-{
-  pd_mandel_from_sym(s, v);
-}
-
 void pd_effective_tensor(const pd_linear_model *m, const pd_family *f, double C[PD_SYM4])
 {
   memset(C, 0, PD_SYM4 * sizeof(double));
@@ -106,7 +101,7 @@ void pd_effective_tensor(const pd_linear_model *m, const pd_family *f, double C[
   if (m->kind == PD_LINEAR_CLASSICAL) {
     const double eye[6] = {1.0, m->dim > 1, m->dim > 2, 0.0, 0.0, 0.0};
     double v[6];
-    mandel_of(eye, v);
+    pd_mandel_from_sym(eye, v);
     add_outer(C, v, m->lambda);
     /* 2 mu times the identity on the strain components of dim */
     const int n = m->dim == 3 ? 6 : m->dim == 2 ? 3 : 1;
@@ -130,7 +125,7 @@ void pd_effective_tensor(const pd_linear_model *m, const pd_family *f, double C[
   }
   if (!pmb) {
     double v[6];
-    mandel_of(M, v);
+    pd_mandel_from_sym(M, v);
     add_outer(C, v, m->lambda * m->norm * m->norm);
   }
 }
