@@ -85,9 +85,11 @@ int exact_read_input(const char *path, exact_input *in, FILE *err)
     }
   }
   fclose(fp);
-  const char *need[] = {"lattice", "n", "spacing", "model", "density", "time", "fields", "output"};
+  /* without fields, only the report (time and output then unused) */
+  const char *need[] = {"lattice", "n", "spacing", "model", "density", "time", "output"};
+  const int solve = in->fields[0] != 0;
   const int missing[] = {!in->lattice[0], !in->n[0], isnan(in->spacing), !in->model[0],
-                         isnan(in->density), isnan(in->time), !in->fields[0], !in->output[0]};
+                         isnan(in->density), solve && isnan(in->time), solve && !in->output[0]};
   for (size_t k = 0; k < sizeof(need) / sizeof(need[0]); k++)
     if (missing[k]) {
       fprintf(err, "pd_exact: %s: missing key '%s'\n", path, need[k]);

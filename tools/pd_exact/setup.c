@@ -85,7 +85,7 @@ int exact_setup(const exact_input *in, exact_problem *p, FILE *err)
     else return fail(err, "2D needs 'plane stress' or 'plane strain'");
   } else p->pdim = PD_3D;
   if (!(in->density > 0.0)) return fail(err, "density must be positive");
-  if (!(in->time >= 0.0)) return fail(err, "time must be >= 0");
+  if (in->fields[0] && !(in->time >= 0.0)) return fail(err, "time must be >= 0");
   p->density = in->density;
   p->time = in->time;
   const int classical = strcmp(in->model, "classical") == 0;
