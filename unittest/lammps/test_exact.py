@@ -6,7 +6,7 @@
    rho w^2 = sum_p 2 c V (1 - cos k p h)/(p h); and the classical chain,
    w = k sqrt(E / rho). Round-off only: 1e-12.
 2. pd/bond and pd/ordinary (3D simple cubic; 2D square plane stress; 2D
-   hexagonal PMB) from a random smooth velocity field of strain ~1e-7 on a
+   hexagonal PMB; 3D with 'quadrature partial' when the build has it) from a random smooth velocity field of strain ~1e-7 on a
    periodic box (no displacement: the bonds' reference x0 is where the
    atoms are created; tools/accuracy/q_waves.py builds the runs). The
    linearized equation is exact to O(strain) = 1e-7 and the tool is exact
@@ -80,8 +80,23 @@ CASES = [
 ]
 
 
+def has_partial(d):
+    """pd_exact reproduces 'quadrature partial' when built with core/pd_quadrature."""
+    with open(os.path.join(d, "in.partial"), "w") as f:
+        f.write("lattice sc\nn 8\nspacing 1\nhorizon 3\nmodel pmb\nK 1\ndensity 1\nquadrature partial\n")
+    return subprocess.run([EXACT, "in.partial"], cwd=d, capture_output=True).returncode == 0
+
+
 def against_lammps(d):
-    for name, base in CASES:
+    cases = list(CASES)
+    if has_partial(d):
+        cases.append(("pd/bond 3D sc quadrature partial",
+                      dict(style="pd/bond", dim=3, lattice="sc", spacing=1e-3, quadrature="partial")))
+        cases.append(("pd/ordinary 3D sc quadrature partial",
+                      dict(style="pd/ordinary", dim=3, lattice="sc", spacing=1e-3, quadrature="partial")))
+    else:
+        print("SKIP quadrature partial: this build has no core/pd_quadrature")
+    for name, base in cases:
         runs = []
         for frac in (0.5, 0.25, 0.125):
             case = dict(base, ratio=3.0, dt_fraction=frac)
