@@ -71,6 +71,11 @@ def cases(mode):
                     add(style=style, dim=2, ratio=ratio, spacing=spacing, dt_fraction=0.5)
             add(style=style, dim=3, ratio=3.0, spacing=5e-4, dt_fraction=0.5)
         add(style="pd/ordinary", dim=3, ratio=3.0, spacing=1e-3, influence="constant")
+        # partial cells (a build with 'quadrature partial'; RuntimeError otherwise)
+        for style in ("pd/bond", "pd/ordinary"):
+            for ratio in (3.0, 4.0):
+                add(style=style, dim=3, ratio=ratio, spacing=1e-3, quadrature="partial")
+                add(style=style, dim=2, ratio=ratio, spacing=5e-4, quadrature="partial")
         return out
     if mode != "full":
         raise ValueError(f"q_waves.cases: mode '{mode}' is not smoke, short or full")
@@ -90,6 +95,12 @@ def cases(mode):
                         for infl in ("constant", "inverse", "tupek", "gaussian"):
                             add(style="pd/ordinary", dim=dim, lattice=lattice, ratio=ratio,
                                 spacing=spacing, dt_fraction=dtf, influence=infl)
+    for dim, spacing in ((3, 6.67e-4), (2, 3.33e-4)):
+        for ratio in (2.5, 3.0, 4.0, 5.0, 6.0):
+            add(style="pd/bond", dim=dim, ratio=ratio, spacing=spacing, quadrature="partial")
+            for infl in ("constant", "inverse"):
+                add(style="pd/ordinary", dim=dim, ratio=ratio, spacing=spacing, influence=infl,
+                    quadrature="partial")
     for order in (0.0, -0.5):
         add(style="pd/ordinary", dim=3, ratio=3.0, spacing=1e-3, order=order)
     return out
