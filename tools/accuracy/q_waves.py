@@ -1,32 +1,33 @@
-"""Quantity (1) of the accuracy sweeps (issue 12): linear waves.
+"""Linear waves: phase error against classical elasticity.
 
-A periodic box holds a random smooth velocity field of small amplitude
-(a few Fourier modes of the box, strain ~1e-7: the linear regime). LAMMPS
-(pd/bond or pd/ordinary) advances it for half the time a bar wave takes to
-cross the box; tools/pd_exact gives the exact solution of the same
-linearized lattice equation and of local elasticity with the same
-constants. Errors are relative L2 norms of the displacement over all sites:
-  time_error  LAMMPS against the exact lattice solution: the time
-              integrator's error alone (second order in dt);
-  phase_error LAMMPS against the classical solution: dispersion and the
-              lattice error of the constants (plus the time error).
-
-Interface for the sweep driver (tools/accuracy/run.py):
-  cases(mode) -> [case dict], mode 'smoke' | 'short' | 'full'
-  measure(case, lmp, pd_exact, workdir) -> dict with phase_error,
-      time_error, seconds (LAMMPS 'Loop time'), particle_steps, and extras.
-Case keys (missing ones take DEFAULTS): style ('pd/bond', 'pd/ordinary'),
-dim (2, 3), lattice ('sc', 'fcc', 'sq', 'hex'), ratio (horizon / spacing),
-spacing (m; the cube root of the volume per particle in 3D, the square
-root of the area per particle in 2D, as the package's own spacing check),
-influence (pd/ordinary), dt_fraction (of the package's stable-step
-estimate, MS07 eq. 43), order (strain order m, pd/ordinary), quadrature
-('point', the default; 'partial' goes to the pair style and to pd_exact,
-which reproduces partial cells when built with core/pd_quadrature: with
-QUADRATURE the driver adds those copies where the binary has them), seed
-(of the random field). A run that fails (LAMMPS or pd_exact refusing a
-setting) raises RuntimeError naming the input.
+A periodic box 16 mm on a side holds a random smooth velocity field of
+small amplitude (four of the box's longest Fourier modes, strain 1e-7:
+the linear regime). LAMMPS (pd/bond or pd/ordinary) advances it for half
+the time a bar wave takes to cross the box; tools/pd_exact gives the exact
+solution of the same linearized lattice equation (FFT, EW06 section 3) and
+that of local elasticity with the same constants. Errors are relative L2
+norms of the displacement over all particles:
+  phase_error  LAMMPS against local elasticity: the nonlocal dispersion
+               (k delta = 1.2 to 2 at delta = 3 mm), the lattice error of
+               the constants, and the time error;
+  time_error   LAMMPS against the exact lattice solution: the time
+               integrator's error alone (second order in dt).
+Spacing is the cube (square) root of the volume (area) per particle; the
+time step a fraction of the package's stable estimate (MS07 eq. 43).
 """
+# Interface for the sweep driver (tools/accuracy/run.py):
+#   cases(mode) -> [case dict], mode 'smoke' | 'short' | 'full'
+#   measure(case, lmp, pd_exact, workdir) -> dict with phase_error,
+#       time_error, seconds (LAMMPS 'Loop time'), particle_steps, extras.
+# Case keys (missing ones take DEFAULTS): style ('pd/bond', 'pd/ordinary'),
+# dim (2, 3), lattice ('sc', 'fcc', 'sq' or 'square', 'hex'), ratio
+# (horizon / spacing), spacing (m), influence (pd/ordinary), dt_fraction,
+# order (strain order m, pd/ordinary), quadrature ('point', the default;
+# 'partial' goes to the pair style and to pd_exact, which reproduces partial
+# cells when built with core/pd_quadrature: with QUADRATURE the driver adds
+# those copies where the binary has them), seed (of the random field). A
+# run that fails (LAMMPS or pd_exact refusing a setting) raises
+# RuntimeError naming the input.
 import math
 import os
 import random
