@@ -52,6 +52,10 @@ NAME = "waves"
 TITLE = "Linear waves: phase error against classical elasticity"
 PRIMARY = "phase_error"
 QUADRATURE = True     # the driver adds 'quadrature partial' copies where the binary has it
+# every case is the same physical problem, so its total cost is what a
+# setting costs: ranked by 'seconds' (LAMMPS's Loop time; no 'wall' key),
+# not per particle-step, which would not charge a finer spacing
+COST = "wall"
 
 
 def family(case):
