@@ -11,16 +11,7 @@
 #ifndef PD_ORIENTATION_H
 #define PD_ORIENTATION_H
 
-/* One particle's complete family in the reference configuration. */
-typedef struct pd_family_sample {
-  int n;             /* bonds */
-  const double *xi;  /* 3 per bond: the reference bond vectors */
-  const double *w;   /* per bond: quadrature weight (influence x partial
-                        volume), or NULL when every weight is 1 */
-  double cell;       /* the partners' volume per particle (3D) or area (2D) */
-  int dim;           /* 2 (bonds in the xy plane) or 3 */
-  double delta;      /* horizon */
-} pd_family_sample;
+#include "pd_lattice.h"
 
 typedef enum pd_release_kind {
   /* fail energy, calibrated on this family averaged over orientations
@@ -31,11 +22,15 @@ typedef enum pd_release_kind {
   PD_RELEASE_BOND_BASED
 } pd_release_kind;
 
-/* G(n) / G_c across a plane of unit normal n. */
-double pd_release(const pd_family_sample *f, pd_release_kind kind, const double n[3]);
+/* G(n) / G_c across a plane of unit normal n, for a complete family f
+ * (pd_lattice.h) of horizon delta; thickness: of a 2D family's volumes
+ * (ignored in 3D). */
+double pd_release(const pd_family *f, double delta, double thickness, pd_release_kind kind,
+                  const double n[3]);
 
 /* The smallest and largest G(n) / G_c over orientations: 360 normals in the
  * xy plane (2D) or 4000 spread evenly over the sphere (3D). */
-void pd_release_range(const pd_family_sample *f, pd_release_kind kind, double *lo, double *hi);
+void pd_release_range(const pd_family *f, double delta, double thickness, pd_release_kind kind,
+                      double *lo, double *hi);
 
 #endif
