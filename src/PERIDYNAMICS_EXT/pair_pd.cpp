@@ -14,6 +14,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "pd_cell_shares.h"
 #include "pd_compat.h"
 #include "pd_error.h"
 #include "pd_failure_law.h"
@@ -23,6 +24,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 
 extern "C" {
 #include "pd_contact.h"
@@ -656,9 +658,10 @@ PDFamilySpec PairPD::family_spec() const
     const int d = dim();
     const double t = thickness;
     spec.beyond = cell_beyond;
-    spec.fraction = [d, t](const PDBondGeometry &g) {
+    auto shares = std::make_shared<PDCellShares>(d);    // shared by the spec's copies
+    spec.fraction = [d, t, shares](const PDBondGeometry &g) {
       const double v = 0.5 * (g.vi + g.vj), a = d == 3 ? cbrt(v) : sqrt(v / t);
-      return pd_cell_fraction(d, g.xi, a, g.horizon);
+      return (*shares)(g.xi, a, g.horizon);
     };
   }
   spec.weight = weight_rule();    // used only when the bonds carry weights
