@@ -105,25 +105,21 @@ def worst(errors):
 # and with the constant influence in 3D
 CASES = [(style, dims) for style in ("pd/bond", "pd/ordinary") for dims in (3, 2)] + \
     [("pd/ordinary constant", 3)]
-table = {}
-for style, dims in CASES:
-    if True:
-        for spacings in (3, 4):
-            for quad in ("point", "partial"):
-                table[(style, dims, spacings, quad)] = measure(style, dims, spacings, quad)
+SPACINGS = (3, 4)
+table = {(style, dims, spacings, quad): measure(style, dims, spacings, quad)
+         for style, dims in CASES for spacings in SPACINGS for quad in ("point", "partial")}
 
 print("energy error per mode (W / W_classical - 1) and bonds per atom; 2D is plane stress")
 print(f"{'style':20s} {'dim':3s} {'delta':5s} | {'point: iso':>10s} {'axes':>8s} {'xy':>8s} {'bonds':>6s} |"
       f" {'partial: iso':>12s} {'axes':>8s} {'xy':>8s} {'bonds':>6s}")
 for style, dims in CASES:
-    if True:
-        for spacings in (3, 4):
-            row = f"{style:20s} {dims}D  {spacings}dx  |"
-            for quad in ("point", "partial"):
-                err, bonds, _ = table[(style, dims, spacings, quad)]
-                row += " " + " ".join(f"{100 * err[k][0]:+9.2f}%" if k == "isotropic" else f"{100 * err[k][0]:+7.2f}%"
-                                     for k in ("isotropic", "axes", "xy")) + f" {bonds:6.1f} |"
-            print(row)
+    for spacings in SPACINGS:
+        row = f"{style:20s} {dims}D  {spacings}dx  |"
+        for quad in ("point", "partial"):
+            err, bonds, _ = table[(style, dims, spacings, quad)]
+            row += " " + " ".join(f"{100 * err[k][0]:+9.2f}%" if k == "isotropic" else f"{100 * err[k][0]:+7.2f}%"
+                                 for k in ("isotropic", "axes", "xy")) + f" {bonds:6.1f} |"
+        print(row)
 print("stress error per mode (|sigma - C:eps| / |C:eps|), point / partial:")
 for key, (err, _, _) in sorted(table.items()):
     print(f"  {key[0]:20s} {key[1]}D {key[2]}dx {key[3]:8s} " +
@@ -139,11 +135,10 @@ for key, (_, _, out) in table.items():
 # Partial volumes add the cut cells beyond the horizon: more bonds (the
 # cost), never fewer.
 for style, dims in CASES:
-    if True:
-        for spacings in (3, 4):
-            p, q = table[(style, dims, spacings, "point")][1], table[(style, dims, spacings, "partial")][1]
-            check(f"{style} {dims}D {spacings} spacings: partial has more bonds per atom than point", q > p,
-                  f"{q:.1f} against {p:.1f}")
+    for spacings in SPACINGS:
+        p, q = table[(style, dims, spacings, "point")][1], table[(style, dims, spacings, "partial")][1]
+        check(f"{style} {dims}D {spacings} spacings: partial has more bonds per atom than point", q > p,
+              f"{q:.1f} against {p:.1f}")
 
 # Where partial volumes measured better (worst energy error over the three
 # modes), it stays better; measured worst errors, point -> partial:
