@@ -144,7 +144,7 @@ void FixPDBonds::take_family_spec()
   if (!built) family_key = spec.key;
   else if (family_key != spec.key)
     error->all(FLERR, "Pair {}: the bond families were built for other pair settings (style, "
-               "horizons, influence, legacy or dimension changed after the first run); they are "
+               "horizons, influence, quadrature, legacy or dimension changed after the first run); they are "
                "built once: start the simulation again with the new settings", spec.style);
 }
 
@@ -210,15 +210,24 @@ void FixPDBonds::build_families()
   const int *type = atom->type;
   double **x0 = atom->x0;
 
-  // a candidate becomes a bond if its reference distance is within the
-  // horizon; the pair is stored once (at its owner) and with one image only
-  // (closest_image walks the image chain from its head, the mapped atom)
-  auto reference_length = [&](int i, int j) {
-    if (!owns_bond(tag[i], tag[j]) || domain->closest_image(i, atom->map(tag[j])) != j) return -1.0;
-    double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-    PDCompat::minimum_image(domain, d);
-    const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    return r <= spec.horizon(type[i], type[j]) ? r : -1.0;
+  // a candidate becomes a bond if the family spec says so (its reference
+  // distance within the horizon, or with partial volumes a share of its
+  // cell inside it); the pair is stored once (at its owner) and with one
+  // image only (closest_image walks the image chain from its head, the
+  // mapped atom). g: the candidate's geometry, for its weight.
+  const double *vol = atom->vfrac;
+  PDBondGeometry g;
+  auto candidate = [&](int i, int j) {
+    if (!owns_bond(tag[i], tag[j]) || domain->closest_image(i, atom->map(tag[j])) != j) return false;
+    g.xi[0] = x0[j][0] - x0[i][0];
+    g.xi[1] = x0[j][1] - x0[i][1];
+    g.xi[2] = x0[j][2] - x0[i][2];
+    PDCompat::minimum_image(domain, g.xi);
+    g.r = sqrt(g.xi[0] * g.xi[0] + g.xi[1] * g.xi[1] + g.xi[2] * g.xi[2]);
+    g.vi = vol[i];
+    g.vj = vol[j];
+    g.horizon = spec.horizon(type[i], type[j]);
+    return spec.is_bond(g);
   };
 
   int mymax = 0;
@@ -226,7 +235,7 @@ void FixPDBonds::build_families()
     const int i = list->ilist[ii];
     int n = 0;
     for (int jj = 0; jj < list->numneigh[i]; jj++)
-      if (reference_length(i, list->firstneigh[i][jj] & NEIGHMASK) >= 0.0) n++;
+      if (candidate(i, list->firstneigh[i][jj] & NEIGHMASK)) n++;
     mymax = MAX(mymax, n);
   }
   int longest;
@@ -251,12 +260,11 @@ void FixPDBonds::build_families()
         const double reach = MAX(spec.horizon(a, a), spec.horizon(b, b));
         touching[a * nt + b] = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= reach * reach;
       }
-      const double r = reference_length(i, j);
-      if (r < 0.0) continue;
+      if (!candidate(i, j)) continue;
       const int k = npartner[i]++;
       partner[i][k] = tag[j];
-      r0[i][k] = r;
-      if (use_weights) weight[i][k] = spec.bond_weight(type[i], type[j], r);
+      r0[i][k] = g.r;
+      if (use_weights) weight[i][k] = spec.bond_weight(g);
       for (int h = 0; h < nhistory; h++) history[i][k * nhistory + h] = 0.0;
     }
   }

@@ -14,6 +14,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "pd_cell_shares.h"
 #include "pd_compat.h"
 #include "pd_error.h"
 #include "pd_failure_law.h"
@@ -23,11 +24,13 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 
 extern "C" {
 #include "pd_contact.h"
 #include "pd_influence.h"
 #include "pd_material_file.h"
+#include "pd_quadrature.h"
 #include "pd_timestep.h"
 }
 
@@ -42,7 +45,7 @@ static const pd_coef FAIL_COEF = {"fail", "failure law", PD_MIX_MAX, PD_COEF_PAI
 
 PairPD::PairPD(LAMMPS *lmp, const pd_coef *material_coefs, int ncoefs) :
     Pair(lmp), decl(material_coefs, material_coefs + ncoefs), nmaterial(ncoefs), ifail(ncoefs),
-    coef(nullptr), legacy(0), recontact(RECONTACT_NEAR), law(nullptr), model_dim(PD_3D),
+    coef(nullptr), legacy(0), recontact(RECONTACT_NEAR), quadrature(QUADRATURE_POINT), cell_beyond(0.0), law(nullptr), model_dim(PD_3D),
     thickness(0.0), lattice_spacing(0.0), bonds(nullptr), report_pending(0), work(nullptr), nwork(0),
     released(nullptr), fresh(nullptr), maxfresh(0), nreleased(0), dt_estimate(0.0), radius(nullptr),
     nradius(0), radius_step(-1)
@@ -178,6 +181,7 @@ void PairPD::settings(int narg, char **arg)
 {
   legacy = 0;
   recontact = RECONTACT_NEAR;
+  quadrature = QUADRATURE_POINT;
   model_dim = PD_3D;
   thickness = 0.0;
   const std::string style = style_name();
@@ -195,6 +199,14 @@ void PairPD::settings(int narg, char **arg)
       else if (strcmp(mode, "any") == 0) recontact = RECONTACT_ANY;
       else if (strcmp(mode, "none") == 0) recontact = RECONTACT_NONE;
       else error->all(FLERR, "Pair style {}: 'recontact {}': expected near, any or none", style, mode);
+      iarg += 2;
+      continue;
+    }
+    if (strcmp(arg[iarg], "quadrature") == 0) {
+      const char *rule = iarg + 1 < narg ? arg[iarg + 1] : "";
+      if (strcmp(rule, "point") == 0) quadrature = QUADRATURE_POINT;
+      else if (strcmp(rule, "partial") == 0) quadrature = QUADRATURE_PARTIAL;
+      else error->all(FLERR, "Pair style {}: 'quadrature {}': expected point or partial", style, rule);
       iarg += 2;
       continue;
     }
@@ -217,6 +229,9 @@ void PairPD::settings(int narg, char **arg)
     if (!used) error->all(FLERR, "Pair style {}: unknown keyword '{}'", style_name(), arg[iarg]);
     iarg += used;
   }
+  if (legacy && partial_volumes())
+    error->all(FLERR, "Pair style {}: 'quadrature partial' and 'legacy' do not go together: legacy "
+               "reproduces PERI, which has its own partial volumes; drop one of them", style);
   if (domain->dimension == 2 && (model_dim == PD_3D || thickness == 0.0))
     error->all(FLERR, "Pair style {} in 2D needs 'plane stress' or 'plane strain' and "
                "'thickness <t>' (the plate thickness; volumes are area x thickness)", style);
@@ -488,7 +503,8 @@ double PairPD::init_one(int i, int j)
   // what the pair's failure law derives for bonds between the types
   if (i != j) law_of(coef[ifail][i][j]).mix(i, j, setflag[i][j]);
   for (size_t p = 0; p < decl.size(); p++) coef[p][j][i] = coef[p][i][j];
-  return horizon(i, j);
+  // partial cells reach past the horizon: the neighbour lists and ghosts must see them
+  return horizon(i, j) > 0.0 ? horizon(i, j) + cell_beyond : horizon(i, j);
 }
 
 // Two pd/ material sub-styles of a hybrid would share one bond store.
@@ -565,6 +581,8 @@ void PairPD::check_spacing()
     error->all(FLERR, "Pair {}: some atoms have zero volume; set it with 'set ... volume'", style);
   double maxspacing;
   MPI_Allreduce(&spacing, &maxspacing, 1, MPI_DOUBLE, MPI_MAX, world);
+  // a bond's cell is the mean of its two atoms' volumes: never larger
+  cell_beyond = partial_volumes() ? pd_cell_reach(dim(), maxspacing) : 0.0;
   if (hmin < 1.01 * maxspacing)
     error->all(FLERR, "Pair {}: horizon {} is not larger than the particle spacing {} ({}): "
                "families would have almost no bonds; use about 3 spacings", style, hmin, maxspacing,
@@ -581,15 +599,17 @@ void PairPD::check_box()
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) cutmax = MAX(cutmax, horizon(i, j));
   double side = 0.0;
+  const double reach = cutmax + cell_beyond;
   for (int d = 0; d < domain->dimension; d++) side = MAX(side, domain->prd[d]);
   if (cutmax > side)
     error->all(FLERR, "Pair {}: horizon {} is longer than the whole box (largest side {}): every "
                "particle would bond to every other; a horizon is usually about 3 particle "
                "spacings (check its units)", style, cutmax, side);
   for (int d = 0; d < domain->dimension; d++)
-    if (domain->periodicity[d] && domain->prd[d] <= 2.0 * cutmax)
-      error->all(FLERR, "Pair {}: periodic box length {} is not larger than twice the horizon {}",
-                 style, domain->prd[d], cutmax);
+    if (domain->periodicity[d] && domain->prd[d] <= 2.0 * reach)
+      error->all(FLERR, "Pair {}: periodic box length {} is not larger than twice the {} {}", style,
+                 domain->prd[d], cell_beyond > 0.0 ? "bonds' reach (horizon + half a cell diagonal)" : "horizon",
+                 reach);
 }
 
 // Legacy partial volumes need the lattice spacing, taken once (before the
@@ -633,6 +653,17 @@ PDFamilySpec PairPD::family_spec() const
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = 1; j <= atom->ntypes; j++) spec.horizons[(size_t) i * (atom->ntypes + 1) + j] = horizon(i, j);
   spec.smallest = smallest_horizon();
+  if (partial_volumes()) {
+    // the cell: side a from the mean of the two volumes (symmetric in the bond)
+    const int d = dim();
+    const double t = thickness;
+    spec.beyond = cell_beyond;
+    auto shares = std::make_shared<PDCellShares>(d);    // shared by the spec's copies
+    spec.fraction = [d, t, shares](const PDBondGeometry &g) {
+      const double v = 0.5 * (g.vi + g.vj), a = d == 3 ? cbrt(v) : sqrt(v / t);
+      return (*shares)(g.xi, a, g.horizon);
+    };
+  }
   spec.weight = weight_rule();    // used only when the bonds carry weights
   return spec;
 }
@@ -643,6 +674,7 @@ double PairPD::family_key() const
 {
   std::string s = fmt::format("{}|{}|{}|{}|{}|{}|{}", style_name(), legacy, lattice_spacing,
                               (int) model_dim, uses_weights(), history_per_bond(), family_settings());
+  if (partial_volumes()) s += "|quadrature partial";    // (point: the key of files written before the option)
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) s += fmt::format("|{}", horizon(i, j));
   uint64_t h = 1469598103934665603ULL;
@@ -808,11 +840,16 @@ bool PairPD::account_failure(const pd_failure &f)
 
 PDFamilySpec::Weight PairPD::weight_rule() const
 {
-  const int partial = legacy;
+  const int peri = legacy;
   const double spacing = lattice_spacing;
-  return [partial, spacing](double r, double horizon) {
-    return partial ? pd_partial_volume_legacy(r, horizon, spacing) : 1.0;
+  return [peri, spacing](const PDBondGeometry &g) {
+    return peri ? pd_partial_volume_legacy(g.r, g.horizon, spacing) : g.fraction;
   };
+}
+
+double PairPD::influence_at(int kind, int dim, const PDBondGeometry &g)
+{
+  return pd_influence((pd_influence_kind) kind, dim, MIN(g.r, g.horizon), g.horizon);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -900,10 +937,13 @@ void PairPD::report_setup()
     std::string hs;
     for (int i = 1; i <= atom->ntypes; i++) hs += fmt::format(" {:.6g}", horizon(i, i));
     const char *dims[] = {"3D", "2D plane stress", "2D plane strain"};
-    utils::logmesg(lmp, "{}: {}{}, horizon{}{}; stable time step estimate (MS07 eq. 43) {:.6g}, "
+    const char *quad = legacy ? "PERI's partial volumes (legacy PERI mode)"
+        : partial_volumes() ? "partial volumes (each cell's share inside the horizon, Seleson 2014)"
+                            : "point (whole cells within the horizon)";
+    utils::logmesg(lmp, "{}: {}{}, horizon{}, quadrature {}; stable time step estimate (MS07 eq. 43) {:.6g}, "
                    "timestep {:.6g} is {:.3f} of it\n", style_name(), dims[model_dim],
-                   dim() == 2 ? fmt::format(" (thickness {})", thickness) : "", hs,
-                   legacy ? " (legacy PERI mode)" : "", dt, update->dt, update->dt / dt);
+                   dim() == 2 ? fmt::format(" (thickness {})", thickness) : "", hs, quad, dt, update->dt,
+                   update->dt / dt);
     const char *rule[] = {"never (recontact none)", "once their particles touch (recontact near)",
                           "whenever compressed, at any length (recontact any)"};
     utils::logmesg(lmp, "{}: broken bonds push {}\n", style_name(),
@@ -977,6 +1017,7 @@ void PairPD::restart_settings(PDSettingsIO &io)
   int dimcode = (int) model_dim;
   io(recontact);
   io(legacy);
+  io(quadrature);
   io(lattice_spacing);
   io(dimcode);
   io(thickness);

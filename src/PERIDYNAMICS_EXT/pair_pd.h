@@ -77,6 +77,9 @@ class PairPD : public Pair, public PDFamilySource {
   static PairPD *active(class Force *);
   double legacy_spacing() const { return legacy ? lattice_spacing : 0.0; }
   double plate_thickness() const { return thickness; }
+  // 'quadrature partial': each bond weighted by the share of its partner's
+  // cell inside the horizon (core/pd_quadrature.h)
+  bool partial_volumes() const { return quadrature == QUADRATURE_PARTIAL; }
   // the stable time step estimate of this run's setup (0 before it)
   double stable_dt() const { return dt_estimate; }
   double smallest_horizon() const;
@@ -104,6 +107,9 @@ class PairPD : public Pair, public PDFamilySource {
   int legacy;               // reproduce legacy PERI (partial volumes, ...)
   enum { RECONTACT_NONE, RECONTACT_NEAR, RECONTACT_ANY };
   int recontact;            // broken bonds push in compression (T14 6.1.3): once their ends touch, at any length, or never
+  enum { QUADRATURE_POINT, QUADRATURE_PARTIAL };
+  int quadrature;           // point: whole partner volumes; partial: their share inside the horizon
+  double cell_beyond;       // partial: how far past the horizon bonds reach (half the largest cell's diagonal)
   std::vector<std::unique_ptr<PDFailureLaw>> laws;   // one of each, core/pd_laws.h order
   PDFailureLaw *law;        // the failure law of the run (one for all pairs)
   pd_dimension model_dim;   // 3D, plane stress or plane strain
@@ -125,10 +131,15 @@ class PairPD : public Pair, public PDFamilySource {
   // may hold more constants than a model needs: those are skipped, named
   // in the log)
   virtual bool uses_coefficient(int) const { return true; }
-  virtual int uses_weights() const { return legacy; }
+  virtual int uses_weights() const { return legacy || partial_volumes(); }
   // quadrature weight of a new bond (used only when uses_weights()), as a
-  // function holding copies of the settings it needs
+  // function holding copies of the settings it needs: PERI's partial
+  // volume (legacy), the cell's share inside the horizon (quadrature
+  // partial) or 1; a style with an influence function multiplies it in
   virtual PDFamilySpec::Weight weight_rule() const;
+  // the influence function at a bond: at its length, or at the horizon for
+  // a partial cell whose centre lies beyond it (its share inside is there)
+  static double influence_at(int kind, int dim, const PDBondGeometry &g);
   virtual int history_per_bond() const { return 0; }
   virtual std::string family_settings() const { return ""; }         // what else shapes the bonds
   virtual void setup_run() {}                                   // first compute of a run

@@ -178,6 +178,10 @@ void PairPDContact::filter_pairs()
   const int *type = atom->type;
   npairs = 0;
   bigint candidates = 0;
+  // which reference pairs are bonds: the material's rule (with partial
+  // volumes some reach past the horizon)
+  const PDFamilySpec spec = material && !legacy ? material->family_spec() : PDFamilySpec();
+  PDBondGeometry g;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     candidates += list->numneigh[i];
@@ -186,8 +190,16 @@ void PairPDContact::filter_pairs()
       if (material && !legacy) {
         double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
         PDCompat::minimum_image(domain, d);
-        const double h = material->horizon(type[i], type[j]);
-        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= h * h) continue;
+        const double reach = spec.reach(type[i], type[j]), d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        if (d2 <= reach * reach) {
+          if (!spec.fraction) continue;    // point quadrature: every pair within the horizon
+          for (int c = 0; c < 3; c++) g.xi[c] = d[c];
+          g.r = sqrt(d2);
+          g.vi = atom->vfrac[i];
+          g.vj = atom->vfrac[j];
+          g.horizon = spec.horizon(type[i], type[j]);
+          if (spec.is_bond(g)) continue;
+        }
       }
       if (npairs == maxpairs) {
         maxpairs = 2 * maxpairs + 1024;

@@ -159,7 +159,8 @@ PDFamilySpec::Weight PairPDCorr::weight_rule() const
 {
   const auto kind = (pd_influence_kind) influence;
   const int d = dim();
-  return [kind, d](double r, double horizon) { return pd_influence(kind, d, r, horizon); };
+  const PDFamilySpec::Weight partial = PairPD::weight_rule();    // the cell's share with 'quadrature partial'
+  return [kind, d, partial](const PDBondGeometry &g) { return influence_at(kind, d, g) * partial(g); };
 }
 
 bool PairPDCorr::any_type_gives(int p) const

@@ -109,15 +109,14 @@ void PairPDOrdinary::init_style()
   PairPD::init_style();
 }
 
-// The influence function, times PERI's partial volume with 'legacy'.
+// The influence function, times PERI's partial volume with 'legacy' or the
+// cell's share inside the horizon with 'quadrature partial'.
 PDFamilySpec::Weight PairPDOrdinary::weight_rule() const
 {
   const auto kind = (pd_influence_kind) influence;
   const int d = dim();
   const PDFamilySpec::Weight partial = PairPD::weight_rule();
-  return [kind, d, partial](double r, double horizon) {
-    return pd_influence(kind, d, r, horizon) * partial(r, horizon);
-  };
+  return [kind, d, partial](const PDBondGeometry &g) { return influence_at(kind, d, g) * partial(g); };
 }
 
 // N = d / m: m is the atom's own weighted volume with the surface

@@ -26,10 +26,22 @@
 
 namespace LAMMPS_NS {
 
+// A candidate bond as the store sees it in the reference configuration.
+struct PDBondGeometry {
+  double xi[3];          // reference bond vector x0_j - x0_i (minimum image)
+  double r;              // its length
+  double vi, vj;         // the two atoms' volumes
+  double horizon;        // of the type pair
+  double fraction;       // share of the partner's cell inside the horizon (1: point quadrature)
+};
+
 struct PDFamilySpec {
-  // The quadrature weight of a new bond of length r with this horizon. It
-  // holds copies of what it needs (no pointer to its pair style).
-  using Weight = std::function<double(double r, double horizon)>;
+  // The quadrature weight of a new bond. It holds copies of what it needs
+  // (no pointer to its pair style).
+  using Weight = std::function<double(const PDBondGeometry &)>;
+  // The share of the partner's cell inside the horizon (partial-volume
+  // quadrature); a candidate with none is no bond.
+  using Fraction = std::function<double(const PDBondGeometry &)>;
 
   std::string style;              // the material style's name, for messages
   double key = 0.0;               // fingerprint of the settings that decide the bonds
@@ -37,10 +49,30 @@ struct PDFamilySpec {
   std::vector<double> horizons;   // (ntypes+1)^2: NaN for a type of another hybrid
                                   // sub-style, 0 for 'nobond'
   double smallest = INFINITY;     // the smallest horizon of a type of this style
+  double beyond = 0.0;            // how far past the horizon a bond may reach (partial cells)
+  Fraction fraction;              // null: point quadrature (a bond iff r <= horizon)
   Weight weight;                  // used only when the bonds carry weights
 
   double horizon(int i, int j) const { return horizons[(size_t) i * (ntypes + 1) + j]; }
-  double bond_weight(int i, int j, double r) const { return weight(r, horizon(i, j)); }
+  // the longest reference distance of a bond between the types (0: none)
+  double reach(int i, int j) const
+  {
+    const double h = horizon(i, j);
+    return h > 0.0 ? h + beyond : h;
+  }
+  // Whether a candidate within reach is a bond: within the horizon (point
+  // quadrature) or with a share of its cell inside it (partial); fills
+  // g.fraction for the weight.
+  bool is_bond(PDBondGeometry &g) const
+  {
+    if (!fraction) {
+      g.fraction = 1.0;
+      return g.r <= g.horizon;
+    }
+    g.fraction = g.r <= g.horizon + beyond ? fraction(g) : 0.0;
+    return g.fraction > 0.0;
+  }
+  double bond_weight(const PDBondGeometry &g) const { return weight(g); }
 };
 
 // A pair style that stores bonds: the material base class implements it.

@@ -3,9 +3,7 @@
 #include <math.h>
 #include <string.h>
 
-#ifdef PDEXT_HAVE_QUADRATURE
 #include "pd_quadrature.h"
-#endif
 
 #define GIVEN(x) (!isnan(x))
 
@@ -41,11 +39,7 @@ static double bond_weight(const double xi[3], double r, void *ctx)
 {
   const weight_ctx *c = (const weight_ctx *) ctx;
   double w = c->ordinary ? pd_influence(c->iw.kind, c->iw.dim, fmin(r, c->iw.horizon), c->iw.horizon) : 1.0;
-#ifdef PDEXT_HAVE_QUADRATURE
   if (c->partial) w *= pd_cell_fraction(c->dim, xi, c->cell, c->iw.horizon);
-#else
-  (void) xi;
-#endif
   return w;
 }
 
@@ -102,13 +96,9 @@ int exact_setup(const exact_input *in, exact_problem *p, FILE *err)
   double cutoff = in->horizon;
   if (in->quadrature[0] && strcmp(in->quadrature, "point") != 0) {
     if (strcmp(in->quadrature, "partial") != 0) return fail(err, "quadrature: expected point or partial");
-#ifdef PDEXT_HAVE_QUADRATURE
     wc.partial = 1;
     wc.cell = d == 3 ? cbrt(p->lat.volume) : d == 2 ? sqrt(p->lat.volume) : p->lat.volume;
     cutoff += pd_cell_reach(d, wc.cell);
-#else
-    return fail(err, "quadrature partial: this build has no core/pd_quadrature");
-#endif
   }
   const int ordinary = wc.ordinary;
   if (!classical && pd_lattice_family(&p->lat, cutoff, in->thickness, bond_weight, &wc, &p->fam) < 1)

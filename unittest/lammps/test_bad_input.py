@@ -261,6 +261,15 @@ cases += [
      "takes no arguments"),
     ("fix pd/bonds by hand", block(6) + "fix mine all pd/bonds noweights history 0\n", "do not define it by hand"),
     ("pd/contact unknown coefficient", block(6) + CONTACT + "stiffnes 1e20\n", "unknown keyword 'stiffnes'"),
+    # quadrature (pair_pd.cpp)
+    ("unknown quadrature", block(6) + "pair_style pd/bond quadrature gauss\n",
+     "'quadrature gauss': expected point or partial"),
+    ("quadrature without a name", block(6) + "pair_style pd/ordinary quadrature\n",
+     "'quadrature ': expected point or partial"),
+    ("partial quadrature with legacy", block(6) + "pair_style pd/bond legacy quadrature partial\n",
+     "'quadrature partial' and 'legacy' do not go together"),
+    ("partial quadrature with legacy (other order)", block(6) + "pair_style pd/ordinary quadrature partial legacy\n",
+     "'quadrature partial' and 'legacy' do not go together"),
     ("pd/contact legacy with friction", block(8) + f"pair_style hybrid/overlay pd/bond legacy pd/contact legacy friction 0.2\n"
      f"pair_coeff * * pd/bond pmb K 1e9 horizon {H}\npair_coeff * * pd/contact\ncomm_modify vel yes\n" + RUN,
      "has no friction"),
