@@ -46,7 +46,7 @@ static const pd_coef FAIL_COEF = {"fail", "failure law", PD_MIX_MAX, PD_COEF_PAI
 PairPD::PairPD(LAMMPS *lmp, const pd_coef *material_coefs, int ncoefs) :
     Pair(lmp), decl(material_coefs, material_coefs + ncoefs), nmaterial(ncoefs), ifail(ncoefs),
     coef(nullptr), legacy(0), recontact(RECONTACT_NEAR), quadrature(QUADRATURE_POINT), cell_beyond(0.0), law(nullptr), model_dim(PD_3D),
-    thickness(0.0), lattice_spacing(0.0), bonds(nullptr), report_pending(0), work(nullptr), nwork(0),
+    thickness(0.0), lattice_spacing(0.0), bonds(nullptr), report_pending(0), timed_since(-1.0), work(nullptr), nwork(0),
     released(nullptr), fresh(nullptr), maxfresh(0), nreleased(0), dt_estimate(0.0), radius(nullptr),
     nradius(0), radius_step(-1)
 {
@@ -759,6 +759,7 @@ pd_failure PairPD::failure_state()
 // atoms, and the tally and failure state when the step asks for them.
 void PairPD::begin_evaluation(Evaluation &e)
 {
+  if (timed_since == 0.0) timed_since = MPI_Wtime();
   e.view = bonds->view();
   e.tally = pd_tally{};
   e.tally.eatom = eflag_atom ? eatom : nullptr;
@@ -772,7 +773,24 @@ bool PairPD::end_evaluation(Evaluation &e)
 {
   const bool broke = e.fails && account_failure(e.fail);
   if (evflag) tally(e.tally);
+  if (timed_since > 0.0) report_cost(e.view, MPI_Wtime() - timed_since);
   return broke;
+}
+
+// What the run's first force evaluation cost per bond, with every effect
+// the scene chose, on this machine (cold caches: an upper estimate).
+void PairPD::report_cost(const pd_bond_view &v, double seconds)
+{
+  timed_since = -1.0;
+  bigint mine = 0, all;
+  for (int i = 0; i < v.nowner; i++) mine += v.count[i];
+  MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  double slowest;
+  MPI_Allreduce(&seconds, &slowest, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (comm->me == 0 && all > 0)
+    utils::logmesg(lmp, "{}: first force evaluation: {:.3g} ns per bond per core ({} bonds, {} ranks, "
+                   "{:.3g} s; caches cold, so an upper estimate)\n", style_name(),
+                   1e9 * slowest * comm->nprocs / (double) all, all, comm->nprocs, slowest);
 }
 
 // Half the particle spacing of every atom (owned + ghost), as pd/contact's
@@ -951,6 +969,9 @@ void PairPD::report_setup()
     report_extra();
     law->report();
   }
+  report_accuracy(family_spec());
+  MPI_Barrier(world);    // rank 0 wrote the report: time the evaluation alone
+  timed_since = 0.0;     // the evaluation that follows
   if (update->dt > dt)
     error->warning(FLERR, "Pair {}: timestep {} exceeds the stable estimate {}", style_name(),
                    update->dt, dt);
@@ -1012,12 +1033,21 @@ void PairPD::read_restart_settings(FILE *fp)
   restart_settings(io);
 }
 
+// Files written before 'quadrature' existed start with recontact (0..2);
+// later ones with a negative layout mark, then the settings.
+static constexpr int SETTINGS_LAYOUT_QUADRATURE = -2;
+
 void PairPD::restart_settings(PDSettingsIO &io)
 {
   int dimcode = (int) model_dim;
-  io(recontact);
+  int layout = SETTINGS_LAYOUT_QUADRATURE;
+  io(layout);
+  const bool old_layout = layout >= 0;
+  if (old_layout) recontact = layout;
+  else io(recontact);
   io(legacy);
-  io(quadrature);
+  if (old_layout) quadrature = QUADRATURE_POINT;
+  else io(quadrature);
   io(lattice_spacing);
   io(dimcode);
   io(thickness);

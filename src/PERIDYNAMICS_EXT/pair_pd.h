@@ -19,6 +19,7 @@
 extern "C" {
 #include "pd_bonds.h"
 #include "pd_coefs.h"
+#include "pd_dispersion.h"
 #include "pd_failure.h"
 #include "pd_loop.h"
 #include "pd_params.h"
@@ -117,6 +118,7 @@ class PairPD : public Pair, public PDFamilySource {
   double lattice_spacing;   // legacy partial volumes need it (0: not yet known)
   FixPDBonds *bonds;
   int report_pending;       // print the setup report at the next compute
+  double timed_since;      // MPI_Wtime at the start of the evaluation the report times (< 0: none)
   double *work;             // per-atom scratch, 2 doubles per atom
   int nwork;
   std::vector<int> field_id;    // the bond store's ids of per_atom_fields(), in their order
@@ -145,6 +147,12 @@ class PairPD : public Pair, public PDFamilySource {
   virtual void setup_run() {}                                   // first compute of a run
   virtual void stable_dt_sum(double *sum) = 0;    // add stiffness sums over nall
   virtual void report_extra() {}
+  // The linear model the style's constants reduce to at small strain on a
+  // lattice, and type t's elastic constants: the setup report's lattice
+  // error. false: none (constants exact by construction).
+  virtual bool linear_model(int, pd_linear_kind &, pd_elastic &) const { return false; }
+  void report_accuracy(const PDFamilySpec &spec);    // pair_pd_accuracy.cpp
+  std::string site_lattice(double volume, pd_lattice &lat) const;
   // the settings kept in restart files: PairPD's, then the style's (call
   // PairPD::restart_settings first)
   virtual void restart_settings(PDSettingsIO &io);
@@ -206,6 +214,7 @@ class PairPD : public Pair, public PDFamilySource {
   };
   void begin_evaluation(Evaluation &e);
   bool end_evaluation(Evaluation &e);
+  void report_cost(const pd_bond_view &v, double seconds);
   bool failing() const;
   pd_failure failure_state();
   bool account_failure(const pd_failure &f);

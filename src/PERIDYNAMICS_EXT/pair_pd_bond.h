@@ -35,6 +35,12 @@ class PairPDBond : public PairPD {
   int history_per_bond() const override { return plastic; }
   void stable_dt_sum(double *) override;
   void restart_settings(PDSettingsIO &io) override;
+  // PMB: its relative lattice error does not depend on the stiffness
+  bool linear_model(int, pd_linear_kind &kind, pd_elastic &e) const override
+  {
+    kind = PD_LINEAR_PMB;
+    return pd_elastic_from_E_nu(1.0, pd_pmb_poisson(model_dim), &e) == 0;
+  }
 };
 
 }    // namespace LAMMPS_NS

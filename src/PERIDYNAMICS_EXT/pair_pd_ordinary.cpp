@@ -214,6 +214,12 @@ void PairPDOrdinary::stable_dt_sum(double *sum)
   pd_ordinary_stiffness(&v, k, atom->vfrac, sum);
 }
 
+bool PairPDOrdinary::linear_model(int t, pd_linear_kind &kind, pd_elastic &e) const
+{
+  kind = PD_LINEAR_ORDINARY;
+  return pd_elastic_from_E_nu(value(PD_ORD_E, t, t), value(PD_ORD_NU, t, t), &e) == 0;
+}
+
 void PairPDOrdinary::report_extra()
 {
   std::string lame;

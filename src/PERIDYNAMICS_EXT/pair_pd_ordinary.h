@@ -52,6 +52,8 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;
   void report_extra() override;
+  // every strain order m linearizes to the same solid
+  bool linear_model(int t, pd_linear_kind &kind, pd_elastic &e) const override;
   void restart_settings(PDSettingsIO &io) override;
   void setup_run() override;
   std::string family_settings() const override;

@@ -96,6 +96,11 @@ class PDFailureLaw : protected Pointers {
   virtual const void *evaluation() { return nullptr; } // the core's parameter struct for one evaluation
   virtual void after_evaluation() {}                   // what follows it (all ranks)
   virtual void report() const {}                       // its line in the setup report (rank 0)
+  // which lattice sum (core/pd_orientation.h, pd_release_kind) gives the
+  // energy a crack releases through type t under this law, as a share of
+  // its G_c; -1: none (no G_c, or the energy of a broken bond depends on
+  // more than its geometry)
+  virtual int release_kind(int /*t*/, bool /*bond_based_material*/) const { return -1; }
 
  protected:
   PairPD *pair;

@@ -18,6 +18,7 @@
 
 extern "C" {
 #include "pd_law_energy.h"
+#include "pd_orientation.h"
 }
 
 using namespace LAMMPS_NS;
@@ -115,6 +116,13 @@ class LawEnergy : public PDFailureLaw {
     if (neighbor->ago == 0) bonds()->copy_to_ghosts(crit);
     params = {crit, gc.data()};
     return &params;
+  }
+
+  // calibrated on the family's orientation average (pd_energy_failure_beta_lattice)
+  int release_kind(int t, bool) const override
+  {
+    const int n = atom->ntypes + 1;
+    return std::isfinite(gc[t * n + t]) ? PD_RELEASE_ENERGY_LAW : -1;
   }
 
   void report() const override

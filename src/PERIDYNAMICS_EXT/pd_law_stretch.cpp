@@ -12,6 +12,7 @@
 
 extern "C" {
 #include "pd_law_stretch.h"
+#include "pd_orientation.h"
 }
 
 using namespace LAMMPS_NS;
@@ -74,6 +75,12 @@ class LawStretch : public PDFailureLaw {
     if (!std::isnan(value(S0, i, j))) return;
     if (explicit_pair && given(GC, i, j)) from_fracture_energy(i, j);
     else value(S0, i, j) = pd_coef_mixed(COEFS[S0].mix, value(S0, i, i), value(S0, j, j));
+  }
+
+  // a bond-based material's bonds, broken at the critical stretch of its G_c
+  int release_kind(int t, bool bond_based) const override
+  {
+    return bond_based && given(GC, t, t) ? PD_RELEASE_BOND_BASED : -1;
   }
 
   const void *evaluation() override

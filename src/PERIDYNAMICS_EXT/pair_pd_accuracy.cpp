@@ -1,0 +1,135 @@
+/* ----------------------------------------------------------------------
+   PERIDYNAMICS_EXT: what the chosen discretization buys, in the setup
+   report: the lattice error of the elastic constants and the fracture
+   energy a crack releases across planes of every orientation, from the
+   lattice sums of one site's family (core/pd_dispersion.h,
+   core/pd_orientation.h). The family is built with the bond store's own
+   rule (which candidates are bonds, their weights: PDFamilySpec) on the
+   lattice the atoms were created on (the 'lattice' command), or on a
+   simple cubic (square) lattice of the particles' spacing.
+------------------------------------------------------------------------- */
+
+#include "pair_pd.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "lattice.h"
+#include "math_const.h"
+#include "pd_failure_law.h"
+
+#include <cmath>
+#include <mpi.h>
+
+extern "C" {
+#include "pd_orientation.h"
+}
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// A bond's weight as the store gives it, for pd_lattice_family.
+struct StoreRule {
+  const PDFamilySpec *spec;
+  int ti, weighted;
+  double volume, horizon;
+};
+
+double store_weight(const double xi[3], double r, void *ctx)
+{
+  const StoreRule &s = *(const StoreRule *) ctx;
+  PDBondGeometry g = {{xi[0], xi[1], xi[2]}, r, s.volume, s.volume, s.horizon, 1.0};
+  if (!s.spec->is_bond(g)) return 0.0;
+  return s.weighted ? s.spec->weight(g) : 1.0;
+}
+
+std::string percent(double x)
+{
+  return fabs(x) < 5e-4 ? "0%" : fmt::format("{:+.1f}%", 100.0 * x);
+}
+
+// The lattice's axes along the box's (its default orientation).
+bool lattice_upright(Lattice *l)
+{
+  double o[3] = {0.0, 0.0, 0.0};
+  l->lattice2box(o[0], o[1], o[2]);
+  for (int a = 0; a < 3; a++) {
+    double v[3] = {a == 0 ? 1.0 : 0.0, a == 1 ? 1.0 : 0.0, a == 2 ? 1.0 : 0.0};
+    l->lattice2box(v[0], v[1], v[2]);
+    for (int b = 0; b < 3; b++)
+      if (b != a && fabs(v[b] - o[b]) > 1e-9 * fabs(v[a] - o[a])) return false;
+  }
+  return true;
+}
+
+}    // namespace
+
+// The lattice of the atoms: the 'lattice' command's when its volume per
+// site is the atoms' (sc, fcc, sq, hex in their default orientation), else
+// sc or sq of the atoms' spacing. Returns its description for the log.
+std::string PairPD::site_lattice(double volume, pd_lattice &lat) const
+{
+  Lattice *l = domain->lattice;
+  const bool upright = l && lattice_upright(l);
+  int kind = -1;
+  if (upright && dim() == 3 && l->style == Lattice::SC) kind = PD_LATTICE_SC;
+  if (upright && dim() == 3 && l->style == Lattice::FCC) kind = PD_LATTICE_FCC;
+  if (upright && dim() == 2 && l->style == Lattice::SQ) kind = PD_LATTICE_SQ;
+  if (upright && dim() == 2 && l->style == Lattice::HEX) kind = PD_LATTICE_HEX;
+  const double site = dim() == 3 ? volume : volume / thickness;
+  if (kind >= 0 && pd_lattice_make((pd_lattice_kind) kind, l->xlattice, &lat) == 0 &&
+      fabs(lat.volume / site - 1.0) < 1e-3)
+    return pd_lattice_name((pd_lattice_kind) kind);
+  pd_lattice_make(dim() == 3 ? PD_LATTICE_SC : PD_LATTICE_SQ, dim() == 3 ? cbrt(site) : sqrt(site), &lat);
+  return fmt::format("{} of the particles' spacing (no matching 'lattice' command)", dim() == 3 ? "sc" : "sq");
+}
+
+void PairPD::report_accuracy(const PDFamilySpec &spec)
+{
+  // one line per type that has atoms (the volume of its first atom here)
+  const int nt = atom->ntypes + 1;
+  std::vector<double> mine(nt, 0.0), volume(nt, 0.0);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mine[atom->type[i]] == 0.0) mine[atom->type[i]] = atom->vfrac[i];
+  MPI_Allreduce(mine.data(), volume.data(), nt, MPI_DOUBLE, MPI_MAX, world);
+  if (comm->me != 0) return;
+
+  for (int t = 1; t < nt; t++) {
+    const double h = spec.horizon(t, t);
+    if (!(volume[t] > 0.0) || !(h > 0.0) || !std::isfinite(h)) continue;
+    pd_lattice lat;
+    const std::string where = site_lattice(volume[t], lat);
+    StoreRule rule = {&spec, t, uses_weights(), volume[t], h};
+    const double ratio = h / (dim() == 3 ? cbrt(lat.volume) : sqrt(lat.volume));
+    const char *quad = partial_volumes() ? "partial" : "point";
+    pd_linear_kind kind = PD_LINEAR_CLASSICAL;
+    pd_elastic e;
+    pd_moduli_error err;
+    const bool linear = linear_model(t, kind, e);
+    if (!linear) {
+      utils::logmesg(lmp, "{}: type {}: constants exact under uniform strain on any lattice (the family's "
+                     "shape normalizes them), horizon {:.3g} spacings\n", style_name(), t, ratio);
+    } else if (pd_lattice_expected_error(&lat, kind, model_dim, &e, h, spec.reach(t, t), thickness,
+                                         store_weight, &rule, &err) == 0) {
+      utils::logmesg(lmp, "{}: type {}: lattice error of the constants on {}, horizon {:.3g} spacings, {} "
+                     "quadrature: dilatation {}, shear along the lattice axes {}, simple shear xy {}\n",
+                     style_name(), t, where, ratio, quad, percent(err.dilatation), percent(err.shear_xx_yy),
+                     percent(err.shear_xy));
+    }
+    const int release = law->release_kind(t, linear && kind == PD_LINEAR_PMB);
+    pd_family f;
+    if (release < 0 || pd_lattice_family(&lat, spec.reach(t, t), thickness, store_weight, &rule, &f) < 1)
+      continue;
+    const auto across = [&](double deg) {
+      const double a = deg * MathConst::MY_PI / 180.0, n[3] = {cos(a), sin(a), 0.0};
+      return pd_release(&f, h, thickness, (pd_release_kind) release, n);
+    };
+    double lo, hi;
+    pd_release_range(&f, h, thickness, (pd_release_kind) release, &lo, &hi);
+    utils::logmesg(lmp, "{}: type {}: a crack releases {:.3f} .. {:.3f} G_c by its orientation (lattice "
+                   "sums): normal along x {:.3f}, at 22.5 degrees {:.3f}, at 45 degrees {:.3f}\n",
+                   style_name(), t, lo, hi, across(0.0), across(22.5), across(45.0));
+    pd_family_free(&f);
+  }
+}
