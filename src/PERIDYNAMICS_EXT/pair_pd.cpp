@@ -181,7 +181,7 @@ void PairPD::settings(int narg, char **arg)
 {
   legacy = 0;
   recontact = RECONTACT_NEAR;
-  quadrature = QUADRATURE_POINT;
+  quadrature = -1;    // not given: the style's default, below
   model_dim = PD_3D;
   thickness = 0.0;
   const std::string style = style_name();
@@ -229,6 +229,7 @@ void PairPD::settings(int narg, char **arg)
     if (!used) error->all(FLERR, "Pair style {}: unknown keyword '{}'", style_name(), arg[iarg]);
     iarg += used;
   }
+  if (quadrature < 0) quadrature = legacy ? QUADRATURE_POINT : default_quadrature();
   if (legacy && partial_volumes())
     error->all(FLERR, "Pair style {}: 'quadrature partial' and 'legacy' do not go together: legacy "
                "reproduces PERI, which has its own partial volumes; drop one of them", style);
