@@ -70,14 +70,19 @@ def header(lattice, h, boundary):
             f"lattice {style} {a_over_h * h!r}\n")
 
 
-def jitter(lattice, h, seed=4711, amplitude=0.2):
-    """Random displacements (uniform, +-amplitude spacings per component)
-    for a '-jitter' lattice; empty otherwise."""
+def jitter(lattice, h, boundary, seed=4711, amplitude=0.2):
+    """For a '-jitter' lattice: random displacements (uniform, +-amplitude
+    spacings per component), made the reference configuration by a
+    write_data / read_data round trip (atom_style peri's reference
+    positions x0 are those of create_atoms or read_data; displace_atoms
+    alone would strain the lattice). Empty otherwise. Regions defined
+    before it are gone after it."""
     if not lattice.endswith("-jitter"):
         return ""
     a = amplitude * h
     z = "0.0" if dims_of(lattice) == 2 else repr(a)
-    return f"displace_atoms all random {a!r} {a!r} {z} {seed} units box\n"
+    return (f"displace_atoms all random {a!r} {a!r} {z} {seed} units box\n"
+            "write_data jitter.data\nclear\n" + header(lattice, h, boundary) + "read_data jitter.data\n")
 
 
 def periodic_block(lattice, h, min_length):
@@ -91,7 +96,7 @@ def periodic_block(lattice, h, min_length):
     text = header(lattice, h, "p p p")
     text += (f"region box prism 0 {lengths[0]!r} 0 {lengths[1]!r} {zrange} 0 0 0 units box\n"
              "create_box 1 box\ncreate_atoms 1 box\n")
-    text += jitter(lattice, h)
+    text += jitter(lattice, h, "p p p")
     text += f"set group all density {material()['density']}\nset group all volume {volume(lattice, h)!r}\n"
     per_cell = {"sc": 1, "fcc": 4, "square": 1, "hex": 2}[base_lattice(lattice)]
     natoms = per_cell * n[0] * n[1] * (n[2] if dims == 3 else 1)
