@@ -6,7 +6,8 @@ The mean energy density of the two, pe / atoms, is compared with
 1/2 eps:C:eps and half the difference of the two virial stresses with
 C:eps: the terms of odd (energy) and even (stress) order in eps cancel, so
 finite-strain terms are of relative order 1e-8, and an exact discrete
-model (pd/corr) meets the classical constants to that order. C is C the classical constants of the material the pair lines
+model (pd/corr) meets the classical constants to that order. C is
+the classical constants of the material the pair lines
 define (PMMA of potentials/materials.pd; bond-based: its fixed Poisson's
 ratio). Modes: the axial strains, the shears (xy, xz, yz: simple shear by
 box tilt), the 45-degree rotated shear of the xy plane (eps_xx = -eps_yy)
@@ -79,6 +80,11 @@ def cases(mode):
                             c["influence"] = influence
                         out.append(c)
     return out
+
+
+def group(case):
+    """Recommendations are made within a model: 3D, plane stress, plane strain."""
+    return case.get("plane", "3d")
 
 
 def family(case):

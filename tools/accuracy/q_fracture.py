@@ -55,6 +55,10 @@ def cases(mode):
     return out
 
 
+def group(case):
+    return f"{deck.dims_of(case['lattice'])}D"
+
+
 def family(case):
     return " ".join(str(case[k]) for k in ("style", "law", "lattice", "influence") if case.get(k))
 

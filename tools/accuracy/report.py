@@ -13,7 +13,8 @@ def per_step(m):
 
 
 def setting_text(case):
-    return ", ".join(f"{k} {v}" for k, v in case.items() if k not in ("quadrature",) or v != "point")
+    return ", ".join(str(v) if k == "plane" else f"{k} {v}" for k, v in case.items()
+                     if k != "quadrature" or v != "point")
 
 
 def _points(rows, primary, cost):
@@ -55,13 +56,17 @@ def write(results, out_dir):
         cost_kind = q.get("cost", "per_particle_step")
         unit = "s per particle-step" if cost_kind == "per_particle_step" else "s (run time)"
         pts = _points(rows, q["primary"], cost_kind)
-        for t in pareto.TARGETS:
-            best = pareto.cheapest(pts, t)
-            if best:
-                lines.append(f"| {name} | {t:g} | {setting_text(best[2]['case'])} | {best[1]:.3g} | "
-                             f"{best[0]:.3g} {unit} |")
-            else:
-                lines.append(f"| {name} | {t:g} | - | | |")
+        groups = sorted({r.get("group", "") for _, _, r in pts})
+        for g in groups:
+            label = f"{name} ({g})" if g else name
+            gpts = [p for p in pts if p[2].get("group", "") == g]
+            for t in pareto.TARGETS:
+                best = pareto.cheapest(gpts, t)
+                if best:
+                    lines.append(f"| {label} | {t:g} | {setting_text(best[2]['case'])} | {best[1]:.3g} | "
+                                 f"{best[0]:.3g} {unit} |")
+                else:
+                    lines.append(f"| {label} | {t:g} | - | | |")
         sec = [f"## {name}: {q['title']}", "", q.get("doc", ""), ""]
         if q.get("note"):
             sec += [q["note"], ""]

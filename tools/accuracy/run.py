@@ -8,7 +8,8 @@ DIR/results.json, DIR/<name>.csv and DIR/report.md with its plots.
 Each module has cases(mode) -> [setting dicts] and measure(case, lmp,
 workdir) -> {metric: value, 'seconds': Loop time, 'particle_steps': n}
 (q_waves: measure(case, lmp, pd_exact, workdir)), and NAME, TITLE,
-PRIMARY (the error metric the report ranks by), optionally family(case),
+PRIMARY (the error metric the report ranks by), optionally family(case)
+(the curve of a case), group(case) (recommendations are made per group),
 COST ('per_particle_step', the default, or 'wall') and QUADRATURE (True:
 the driver adds 'quadrature partial' copies of the cases when the binary
 accepts that pair_style keyword)."""
@@ -119,6 +120,8 @@ def main():
             os.makedirs(wd, exist_ok=True)
             t = time.time()
             row = {"case": case, "family": family(mod, case)}
+            if hasattr(mod, "group"):
+                row["group"] = mod.group(case)
             try:
                 m = mod.measure(case, lmp, a.exact, wd) if needs_exact else mod.measure(case, lmp, wd)
                 row["metrics"] = m

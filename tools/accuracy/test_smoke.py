@@ -62,8 +62,10 @@ for name in sorted(qs):
         ok = os.path.exists(png) and os.path.getsize(png) > 1000 and open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n"
         check(f"{name}: plot {os.path.basename(png)} is a non-empty PNG", ok)
         check(f"{name}: report shows {os.path.basename(png)}", f"]({os.path.basename(png)})" in report)
-    n_rec = sum(1 for l in report.splitlines() if l.startswith(f"| {name} | "))
-    check(f"{name}: a recommendation row per target", n_rec == 4, f"{n_rec} rows")
+    groups = {r.get("group") for r in rows}
+    n_rec = sum(1 for l in report.splitlines() if l.startswith(f"| {name} | ") or l.startswith(f"| {name} ("))
+    check(f"{name}: a recommendation row per target and group", n_rec == 4 * len(groups),
+          f"{n_rec} rows, {len(groups)} group(s)")
 
 
 def row(q, **kv):
