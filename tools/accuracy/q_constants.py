@@ -20,6 +20,7 @@ import deck
 
 NAME = "constants"
 PRIMARY = "err"
+QUADRATURE = True       # the driver adds quadrature partial where the binary has it
 TITLE = "Elastic constants (worst mode, energy and stress)"
 E0 = 1.0e-4
 COST_STEPS = 20
@@ -70,7 +71,10 @@ def cases(mode):
                 ["plane stress"] if mode == "smoke" else ["plane stress", "plane strain"])
             for plane in planes:
                 for ratio in ratios:
-                    for influence in (infl if style == "pd/ordinary" else [None]):
+                    # the second influence function: the other of the 3D (inverse) and
+                    # 2D (constant) defaults
+                    other = {"constant": "inverse"} if plane != "3d" else {}
+                    for influence in ([other.get(i, i) for i in infl] if style == "pd/ordinary" else [None]):
                         if mode == "smoke" and style != "pd/bond" and lattice != "sc":
                             continue
                         c = {"style": style, "lattice": lattice, "ratio": ratio, "quadrature": "point"}
