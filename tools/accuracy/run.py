@@ -7,8 +7,10 @@ DIR/results.json, DIR/<name>.csv and DIR/report.md with its plots.
 
 Each module has cases(mode) -> [setting dicts] and measure(case, lmp,
 workdir) -> {metric: value, 'seconds': Loop time, 'particle_steps': n}
-(q_waves: measure(case, lmp, pd_exact, workdir)), and NAME, TITLE,
-PRIMARY (the error metric the report ranks by), optionally family(case)
+(q_waves: measure(case, lmp, pd_exact, workdir), skipped with a message
+when there is no pd_exact binary), and optionally NAME, TITLE, PRIMARY
+(the error metric the report ranks by; defaults: the file's name, the
+docstring's first line, 'err' or PRIMARY below), family(case)
 (the curve of a case), group(case) (recommendations are made per group),
 COST ('per_particle_step', the default, or 'wall') and QUADRATURE (True:
 the driver adds 'quadrature partial' copies of the cases when the binary
@@ -32,6 +34,9 @@ import plot      # noqa: E402
 import report    # noqa: E402
 
 ORDER = ["waves", "constants", "fracture", "crack", "riemann"]
+# what a module that does not say gets: its name from the file, its title
+# from its docstring's first line, and its error metric
+PRIMARY = {"waves": "phase_error"}
 
 
 def modules(only):
@@ -52,10 +57,17 @@ def partial_quadrature(lmp):
     return ok
 
 
+def describe(mod):
+    """(name, title, primary metric) of a quantity module."""
+    name = getattr(mod, "NAME", mod.__name__[2:])
+    doc = (mod.__doc__ or name).strip().splitlines()[0]
+    return name, getattr(mod, "TITLE", doc), getattr(mod, "PRIMARY", PRIMARY.get(name, "err"))
+
+
 def family(mod, case):
     if hasattr(mod, "family"):
         return mod.family(case)
-    return " ".join(f"{k}={v}" for k, v in case.items() if k != "ratio")
+    return " ".join(f"{k} {v}" for k, v in case.items() if k not in ("ratio", "seed") and v is not None)
 
 
 def write_csv(path, rows):
@@ -75,7 +87,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--mode", choices=("smoke", "short", "full"), default="smoke")
     ap.add_argument("--lmp", default=os.environ.get("PDEXT_LMP", os.path.join(deck.ROOT, "build", "lmp")))
-    ap.add_argument("--exact", default=os.path.join(deck.ROOT, "build", "pd_exact"),
+    ap.add_argument("--exact", default=os.environ.get("PDEXT_EXACT", os.path.join(deck.ROOT, "build", "pd_exact")),
                     help="the pd_exact binary (FFTW lattice solution) for q_waves")
     ap.add_argument("--out", required=True)
     ap.add_argument("--only", default="", help="comma-separated quantity names")
@@ -99,7 +111,7 @@ def main():
           " (sweeping 'point' only for the others)", flush=True)
     only = set(filter(None, a.only.split(",")))
     for mod in modules(only):
-        name = mod.NAME
+        name, title, primary = describe(mod)
         needs_exact = len(inspect.signature(mod.measure).parameters) == 4
         if needs_exact and not os.access(a.exact, os.X_OK):
             why = f"no pd_exact binary at {a.exact} (give --exact PATH): quantity '{name}' not measured"
@@ -111,7 +123,7 @@ def main():
             cases += [dict(c, quadrature="partial") for c in cases
                       if c.get("quadrature", "point") == "point" and c.get("style") in partial]
         rows = []
-        q = {"title": mod.TITLE, "primary": mod.PRIMARY, "cost": getattr(mod, "COST", "per_particle_step"),
+        q = {"title": title, "primary": primary, "cost": getattr(mod, "COST", "per_particle_step"),
              "error_unit": getattr(mod, "ERROR_UNIT", "relative error"),
              "doc": (mod.__doc__ or "").strip(), "rows": rows}
         results["quantities"][name] = q
@@ -125,7 +137,7 @@ def main():
             try:
                 m = mod.measure(case, lmp, a.exact, wd) if needs_exact else mod.measure(case, lmp, wd)
                 row["metrics"] = m
-                msg = f"{mod.PRIMARY} {m[mod.PRIMARY]:.4g}"
+                msg = f"{primary} {m[primary]:.4g}"
             except Exception as err:      # one failed case is reported, the sweep goes on
                 row["error"] = f"{type(err).__name__}: {err}"
                 msg = "FAILED " + row["error"]
