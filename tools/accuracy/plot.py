@@ -25,9 +25,10 @@ def _q(s):
     return '"' + s.replace('"', "'") + '"'
 
 
-def error_vs_cost(path, curves, front, xlabel, ylabel, title):
+def error_vs_cost(path, curves, front, xlabel, ylabel, title, targets=()):
     """curves: {family: [(cost, err), ...]} in sweep order; front: [(cost,
-    err), ...]. Writes path (PNG); returns path."""
+    err), ...]; targets: error levels drawn as dotted lines. Writes path
+    (PNG); returns path."""
     exe = gnuplot()
     data_dir = path + ".data"
     os.makedirs(data_dir, exist_ok=True)
@@ -46,6 +47,9 @@ def error_vs_cost(path, curves, front, xlabel, ylabel, title):
     plots.append(f"{_q(f)} using 1:2 with points pt 6 ps 2.5 lc rgb 'black' notitle")
     script = (f"set terminal pngcairo size 1100,750 font ',10'\nset output {_q(path)}\n"
               "set logscale xy\nset grid\nset key outside right top font ',8'\n"
+              "set format x '%.0e'\nset format y '%.0e'\n" +
+              "".join(f"set arrow from graph 0, first {t!r} to graph 1, first {t!r} nohead dt 3 lc rgb 'gray50'\n"
+                      for t in targets) +
               f"set xlabel {_q(xlabel)}\nset ylabel {_q(ylabel)}\nset title {_q(title)}\n"
               "plot " + ", \\\n     ".join(plots) + "\n")
     with open(path + ".gp", "w") as out:

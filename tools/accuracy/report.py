@@ -17,6 +17,12 @@ def setting_text(case):
                      if k != "quadrature" or v != "point")
 
 
+def plot_name(name, group, kind):
+    """The PNG of a quantity (and group) against a cost kind."""
+    slug = "".join(ch if ch.isalnum() else "_" for ch in group) if group else ""
+    return f"{name}{'_' + slug if slug else ''}_{kind}.png"
+
+
 def _points(rows, primary, cost):
     pts = []
     for r in rows:
@@ -24,6 +30,8 @@ def _points(rows, primary, cost):
         if not m or primary not in m:
             continue
         c = per_step(m) if cost == "per_particle_step" else m.get("wall", m["seconds"])
+        if not c > 0:
+            continue        # a cost of 0 or NaN has no place on a log axis
         pts.append((c, m[primary], r))
     return pts
 
@@ -72,18 +80,20 @@ def write(results, out_dir):
             sec += [q["note"], ""]
         if pts:
             order = lambda c: tuple(str(c.get(k)) for k in sorted(c) if k != "ratio") + (float(c.get("ratio", 0)),)
-            for kind, label in (("per_particle_step", "Loop time per particle-step (s)"),
-                                ("wall", "run time of the measurement (s)")):
-                pk = _points(rows, q["primary"], "per_particle_step" if kind == "per_particle_step" else "wall")
-                png = os.path.join(out_dir, f"{name}_{kind}.png")
-                plot.error_vs_cost(png, _curves(pk, order), [(c, e) for c, e, _ in pareto.front(pk)],
-                                   label, f"{q['primary']} ({q.get('error_unit', 'relative error')})",
-                                   f"{name}: {q['title']}")
-                sec += [f"![{name}: error against {label}]({os.path.basename(png)})", ""]
-            frontier = pareto.front(pts)
-            sec += ["Pareto front (" + unit + "):", ""]
-            sec += [f"- {setting_text(r['case'])}: error {e:.3g}, cost {c:.3g}" for c, e, r in frontier]
-            sec += [""]
+            for g in groups:
+                glabel = f" ({g})" if g else ""
+                for kind, label in (("per_particle_step", "Loop time per particle-step (s)"),
+                                    ("wall", "run time of the measurement (s)")):
+                    pk = [p for p in _points(rows, q["primary"], kind) if p[2].get("group", "") == g]
+                    png = os.path.join(out_dir, plot_name(name, g, kind))
+                    plot.error_vs_cost(png, _curves(pk, order), [(c, e) for c, e, _ in pareto.front(pk)],
+                                       label, f"{q['primary']} ({q.get('error_unit', 'relative error')})",
+                                       f"{name}{glabel}: {q['title']}", pareto.TARGETS)
+                    sec += [f"![{name}{glabel}: error against {label}]({os.path.basename(png)})", ""]
+                frontier = pareto.front([p for p in pts if p[2].get("group", "") == g])
+                sec += [f"Pareto front{glabel} ({unit}):", ""]
+                sec += [f"- {setting_text(r['case'])}: error {e:.3g}, cost {c:.3g}" for c, e, r in frontier]
+                sec += [""]
         metric_keys = []
         for r in rows:
             for k in (r.get("metrics") or {}):

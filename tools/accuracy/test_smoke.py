@@ -31,6 +31,8 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import report    # noqa: E402   (the plots' file names)
 LMP = os.environ.get("PDEXT_LMP") or os.path.join(HERE, "..", "..", "build", "lmp")
 OUT = os.environ.get("PDEXT_ACCURACY_OUT") or tempfile.mkdtemp(prefix="pdacc-")
 counts = {"pass": 0, "fail": 0}
@@ -49,21 +51,23 @@ res = json.load(open(os.path.join(OUT, "results.json")))
 qs = res["quantities"]
 expected = {"constants", "fracture", "crack", "riemann"}
 check("results.json has every quantity", expected <= set(qs), " ".join(sorted(qs)))
-report = open(os.path.join(OUT, "report.md")).read()
+text = open(os.path.join(OUT, "report.md")).read()
 check("report.md has the recommendation table",
-      "| quantity | target | cheapest setting | error | cost |" in report)
+      "| quantity | target | cheapest setting | error | cost |" in text)
 for name in sorted(qs):
     rows = qs[name]["rows"]
     check(f"{name}: every case measured", rows and all("metrics" in r for r in rows),
           "; ".join(r.get("error", "") for r in rows if "error" in r))
     check(f"{name}: CSV written", os.path.getsize(os.path.join(OUT, f"{name}.csv")) > 0)
-    for kind in ("per_particle_step", "wall"):
-        png = os.path.join(OUT, f"{name}_{kind}.png")
-        ok = os.path.exists(png) and os.path.getsize(png) > 1000 and open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n"
-        check(f"{name}: plot {os.path.basename(png)} is a non-empty PNG", ok)
-        check(f"{name}: report shows {os.path.basename(png)}", f"]({os.path.basename(png)})" in report)
+    for g in sorted({r.get("group", "") for r in rows}):
+        for kind in ("per_particle_step", "wall"):
+            png = os.path.join(OUT, report.plot_name(name, g, kind))
+            ok = os.path.exists(png) and os.path.getsize(png) > 1000 and \
+                open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n"
+            check(f"{name}: plot {os.path.basename(png)} is a non-empty PNG", ok)
+            check(f"{name}: report shows {os.path.basename(png)}", f"]({os.path.basename(png)})" in text)
     groups = {r.get("group") for r in rows}
-    n_rec = sum(1 for l in report.splitlines() if l.startswith(f"| {name} | ") or l.startswith(f"| {name} ("))
+    n_rec = sum(1 for l in text.splitlines() if l.startswith(f"| {name} | ") or l.startswith(f"| {name} ("))
     check(f"{name}: a recommendation row per target and group", n_rec == 4 * len(groups),
           f"{n_rec} rows, {len(groups)} group(s)")
 
