@@ -53,7 +53,7 @@ def strip(case, turned):
     text = deck.header(lattice, h, "s s p")
     if turned:
         orient = "orient x 1 1 0 orient y -1 1 0" if lattice == "square" else "orient x 0 1 0 orient y -1 0 0"
-        text = text.replace("\nlattice ", "\nlattice ", 1).rstrip("\n") + f" {orient}\n"
+        text = text.rstrip("\n") + f" {orient}\n"      # the header ends with the lattice command
     text += (f"region box block 0 {L!r} 0 {HS!r} {-0.5 * h!r} {0.5 * h!r} units box\n"
              "create_box 1 box\ncreate_atoms 1 box\n")
     text += f"set group all density {mat['density']}\nset group all volume {deck.volume(lattice, h)!r}\n"

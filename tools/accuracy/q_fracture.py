@@ -99,7 +99,7 @@ def separation(case, theta, h=H):
         W *= 3          # no rows: a longer window averages the atoms' offsets to its edges
     T = W / 2 + 2 * delta + h
     nz = math.ceil(2 * delta / a) + 1
-    lz = nz * a * (1.0 if deck.base_lattice(lattice) != "fcc" else 1.0)
+    lz = nz * a
     ext = B + T + abs(c0) + a
     zr = f"{-0.5 * a!r} {0.5 * a!r}" if dims == 2 else f"0 {lz!r}"
     mat = deck.material()
