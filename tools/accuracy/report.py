@@ -56,7 +56,7 @@ def write(results, out_dir):
              "otherwise.", "",
              "## Recommendations", "",
              "For each target error, the cheapest measured setting that meets it (cost as the quantity's "
-             "plot ranks it; `-`: no measured setting meets it).", "",
+             "plot ranks it; `-`: no measured setting meets it, and the most accurate one is shown).", "",
              "| quantity | target | cheapest setting | error | cost |", "|---|---|---|---|---|"]
     sections = []
     for name, q in qs.items():
@@ -74,7 +74,9 @@ def write(results, out_dir):
                     lines.append(f"| {label} | {t:g} | {setting_text(best[2]['case'])} | {best[1]:.3g} | "
                                  f"{best[0]:.3g} {unit} |")
                 else:
-                    lines.append(f"| {label} | {t:g} | - | | |")
+                    top = min(gpts, key=lambda p: p[1])
+                    lines.append(f"| {label} | {t:g} | - (most accurate measured: {setting_text(top[2]['case'])}) | "
+                                 f"{top[1]:.3g} | {top[0]:.3g} {unit} |")
         sec = [f"## {name}: {q['title']}", "", q.get("doc", ""), ""]
         if q.get("note"):
             sec += [q["note"], ""]
