@@ -49,7 +49,7 @@ demo: build
 bench: build
 	./bench/run.sh $(LMP)
 
-# Accuracy against cost: the sweeps (about an hour on 2 cores), the report
+# Accuracy against cost: the sweeps (1-1.5 hours on 2 cores), the report
 # with its Pareto plots and recommendation table in build/accuracy/report.md
 accuracy: build
 	./tools/setup-deps.sh accuracy
