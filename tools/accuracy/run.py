@@ -104,7 +104,7 @@ def main():
         sys.exit(f"accuracy: no LAMMPS binary at {lmp} (give --lmp or PDEXT_LMP)")
     plot.gnuplot()          # fail before hours of runs, not after
     t0 = time.time()
-    results = {"mode": a.mode, "lmp": lmp, "date": datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC"),
+    results = {"mode": a.mode, "lmp": lmp, "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
                "quantities": {}, "skipped": {}}
     partial = partial_quadrature(lmp)
     print(f"accuracy: {a.mode} mode, {lmp}; 'quadrature partial' accepted by: {' '.join(partial) or 'none'}"
