@@ -27,7 +27,10 @@ G_LOAD = 2.5      # energy release rate of the stretched strip, in G_c
 def cases(mode):
     if mode == "smoke":
         return [{"style": "pd/ordinary", "law": "energy", "lattice": "square", "ratio": 3, "h": 5e-4, "dt_frac": 1.0}]
-    ratios = [3, 4] if mode == "short" else [2.5, 3, 4, 5, 6]
+    # not 6 spacings at 0.5 mm: a 3 mm horizon is a third of the strip's
+    # half-height, and the energy-law crack no longer runs cleanly along
+    # the mid-line (measured: the tip jumps to the far end)
+    ratios = [3, 4] if mode == "short" else [2.5, 3, 4, 5]
     lats = ["square"] if mode == "short" else ["square", "hex"]
     out = []
     for lattice in lats:
