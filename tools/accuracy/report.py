@@ -51,6 +51,9 @@ def write(results, out_dir):
     lines = [f"# Accuracy against cost: {results['mode']} mode", "",
              f"Binary: `{results['lmp']}`; {results['date']}; one MPI rank on a machine shared with other "
              "jobs (times are as measured, noisy to some 10-30%).", "",
+             "Quadrature: `quadrature partial` is " +
+             (f"swept for {', '.join(results['quadrature_partial'])}" if results.get("quadrature_partial")
+              else "not accepted by this binary: every case uses the one-point quadrature") + ".", "",
              "Cost: seconds of LAMMPS's Loop time per particle-step, or the wall time of the whole "
              "measurement (all its LAMMPS runs). Errors are relative (0.05 = 5%) unless the quantity says "
              "otherwise.", "",

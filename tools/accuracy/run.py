@@ -107,6 +107,7 @@ def main():
     results = {"mode": a.mode, "lmp": lmp, "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
                "quantities": {}, "skipped": {}}
     partial = partial_quadrature(lmp)
+    results["quadrature_partial"] = partial
     print(f"accuracy: {a.mode} mode, {lmp}; 'quadrature partial' accepted by: {' '.join(partial) or 'none'}"
           " (sweeping 'point' only for the others)", flush=True)
     only = set(filter(None, a.only.split(",")))
