@@ -725,9 +725,22 @@ pd_failure PairPD::failure_state()
 
 // What one evaluation of the material works on: the bonds, this rank's
 // atoms, and the tally and failure state when the step asks for them.
-pd_loop PairPD::evaluation(const pd_bond_view &v, pd_tally *t, pd_failure *f) const
+void PairPD::begin_evaluation(Evaluation &e)
 {
-  return {&v, atom->type, atom->ntypes + 1, atom->x[0], atom->vfrac, atom->f[0], t, f};
+  e.view = bonds->view();
+  e.tally = pd_tally{};
+  e.tally.eatom = eflag_atom ? eatom : nullptr;
+  e.fails = failing();
+  e.fail = e.fails ? failure_state() : pd_failure{};
+  e.L = {&e.view, atom->type, atom->ntypes + 1, atom->x[0], atom->vfrac, atom->f[0],
+         evflag ? &e.tally : nullptr, e.fails ? &e.fail : nullptr};
+}
+
+bool PairPD::end_evaluation(Evaluation &e)
+{
+  const bool broke = e.fails && account_failure(e.fail);
+  if (evflag) tally(e.tally);
+  return broke;
 }
 
 // Half the particle spacing of every atom (owned + ghost), as pd/contact's
@@ -808,8 +821,16 @@ PDFamilySpec::Weight PairPD::weight_rule() const
 // each run: the store returns their ids).
 void PairPD::declare_fields()
 {
+  declared = per_atom_fields();
   field_id.clear();
-  for (const PDField &f : per_atom_fields()) field_id.push_back(bonds->add_field(f));
+  for (const PDField &f : declared) field_id.push_back(bonds->add_field(f));
+}
+
+int PairPD::field_index(const std::string &name) const
+{
+  for (size_t k = 0; k < declared.size() && k < field_id.size(); k++)
+    if (declared[k].name == name) return field_id[k];
+  return -1;
 }
 
 // (under hybrid, the types of other sub-styles have no value here)

@@ -114,6 +114,8 @@ class PairPD : public Pair, public PDFamilySource {
   double *work;             // per-atom scratch, 2 doubles per atom
   int nwork;
   std::vector<int> field_id;    // the bond store's ids of per_atom_fields(), in their order
+  std::vector<PDField> declared;    // per_atom_fields() as of the last init
+  int field_index(const std::string &name) const;    // its id in the bond store, -1 if not declared
 
   // style hooks
   virtual int parse_setting(int narg, char **arg, int iarg);    // returns args used, 0 if unknown
@@ -176,10 +178,25 @@ class PairPD : public Pair, public PDFamilySource {
   void report_setup();
   double family_key() const;
   void check_failure(int i, int j);   // the type pair's failure law and its values
+  // What one force evaluation works on: the bonds, the tally the step asks
+  // for and the failure state when bonds can break. begin_evaluation fills
+  // it in place (its pd_loop points into it: never copied or moved);
+  // end_evaluation books what broke and tallies, and returns whether bonds
+  // broke anywhere (or were replayed).
+  struct Evaluation {
+    pd_bond_view view;
+    pd_tally tally;
+    pd_failure fail;
+    bool fails;
+    pd_loop L;
+    Evaluation() = default;
+    Evaluation(const Evaluation &) = delete;
+    Evaluation &operator=(const Evaluation &) = delete;
+  };
+  void begin_evaluation(Evaluation &e);
+  bool end_evaluation(Evaluation &e);
   bool failing() const;
   pd_failure failure_state();
-  pd_loop evaluation(const pd_bond_view &v, pd_tally *t, pd_failure *f) const;
-  // returns whether bonds broke anywhere (or were replayed) in this evaluation
   bool account_failure(const pd_failure &f);
   double *zero_released();
   void book_released();

@@ -106,30 +106,22 @@ void PairPDBond::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   if (report_pending) report_setup();
 
-  const pd_bond_view v = bonds->view();
   const pd_pmb mat = {coef[PD_BOND_C][0]};
-  pd_tally t = {};
-  t.eatom = eflag_atom ? eatom : nullptr;
-  pd_tally *tp = evflag ? &t : nullptr;
+  Evaluation e;
   if (plastic) {
-    if (bonds->fracture().has_broken() || law->breaks())
+    if (failing())
       error->all(FLERR, "Pair pd/bond: microplastic bonds cannot be broken (no failure law or "
                  "pre-crack in a style with microplastic pairs)");
+    begin_evaluation(e);
     pd_microplastic mp = {coef[PD_BOND_YIELD][0], bonds->history_data(), 0.0, 0.0, zero_released()};
-    const pd_loop L = evaluation(v, tp, nullptr);
-    pd_microplastic_forces(&L, &mat, &mp);
+    pd_microplastic_forces(&e.L, &mat, &mp);
     bonds->fracture().add_dissipated(mp.dissipated, mp.dissipated_joule);
     book_released();
-  } else if (failing()) {
-    pd_failure fail = failure_state();
-    const pd_loop L = evaluation(v, tp, &fail);
-    pd_pmb_forces(&L, &mat);
-    account_failure(fail);
   } else {
-    const pd_loop L = evaluation(v, tp, nullptr);
-    pd_pmb_forces(&L, &mat);
+    begin_evaluation(e);
+    pd_pmb_forces(&e.L, &mat);
   }
-  if (evflag) tally(t);
+  end_evaluation(e);
   pvector[0] = bonds->fracture().local_dissipated();    // compute pair sums it over ranks
 }
 

@@ -197,14 +197,6 @@ std::vector<PDField> PairPDCorr::per_atom_fields() const
   return f;
 }
 
-int PairPDCorr::field_index(const char *name) const
-{
-  const std::vector<PDField> f = per_atom_fields();
-  for (size_t k = 0; k < f.size() && k < field_id.size(); k++)
-    if (f[k].name == name) return field_id[k];
-  return -1;
-}
-
 double *PairPDCorr::field(const char *name) const
 {
   const int id = field_index(name);
@@ -389,7 +381,6 @@ void PairPDCorr::compute(int eflag, int vflag)
 
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
-  const pd_bond_view v = bonds->view();
   const Fields f = fields();
   pd_corr_state st = state(f);
   // the damage of both ends decides whether a bond counts: the same values
@@ -401,26 +392,22 @@ void PairPDCorr::compute(int eflag, int vflag)
     st.damage = damage_used.data();
   }
 
-  const bool fails = failing();
-  pd_failure fail = fails ? failure_state() : pd_failure{};
-  pd_failure *fp = fails ? &fail : nullptr;
-  pd_tally t = {};
-  t.eatom = eflag_atom ? eatom : nullptr;
-  const pd_loop L = evaluation(v, evflag ? &t : nullptr, fp);
+  Evaluation e;
+  begin_evaluation(e);
   // bonds the store dropped as lost leave their families at reneighboring
-  if (shape_stale || damage() || neighbor->ago == 0 || (fp && fp->replay)) update_shapes(L, st, f);
+  if (shape_stale || damage() || neighbor->ago == 0 || (e.fails && e.fail.replay))
+    update_shapes(e.L, st, f);
   for (bigint k = 0; k < (bigint) nall * width; k++) f.sums[k] = 0.0;
   st.sum = f.sums;
-  pd_corr_sums(&L, &st);
+  pd_corr_sums(&e.L, &st);
   bonds->sum_to_owners(field_index("corr_sums"));
-  for (int i = 0; i < nlocal; i++) atom_step(i, st, f, t);
+  for (int i = 0; i < nlocal; i++) atom_step(i, st, f, e.tally);
 
-  for (const PDField &decl : per_atom_fields())
-    if (decl.flags & PDField::FORWARD && decl.name != "jc_damage") bonds->forward(field_index(decl.name.c_str()));
-  pd_corr_forces(&L, &st);
+  for (const PDField &decl : declared)
+    if (decl.flags & PDField::FORWARD && decl.name != "jc_damage") bonds->forward(field_index(decl.name));
+  pd_corr_forces(&e.L, &st);
   // bonds that broke leave their families: new shapes next time
-  if (fails && account_failure(fail)) shape_stale = true;
-  if (evflag) tally(t);
+  if (end_evaluation(e)) shape_stale = true;
 }
 
 // As the ordinary solid of the same moduli (pd_ordinary_stiffness): an

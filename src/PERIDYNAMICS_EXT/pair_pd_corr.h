@@ -74,7 +74,6 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   };
   Fields fields() const;
   double *field(const char *name) const;
-  int field_index(const char *name) const;    // its id in the bond store
   int plastic() const { return model == PD_CORR_J2 || model == PD_CORR_JOHNSON_COOK; }
   // Johnson-Cook options, on when a type gives their constants (known from
   // pair_coeff on, so compute pd/atom can name their fields before a run)

@@ -174,20 +174,16 @@ void PairPDOrdinary::compute(int eflag, int vflag)
   const int *type = atom->type;
   double *sum = work;
   for (int i = 0; i < nall; i++) sum[i] = 0.0;
-  const pd_bond_view v = bonds->view();
+  Evaluation e;
+  begin_evaluation(e);
+  const pd_bond_view &v = e.view;
   if (order != 0.5 && (bigint) v.nowner * v.stride > nstrain) {
     nstrain = (bigint) atom->nmax * v.stride;
     memory->destroy(strain);
     memory->create(strain, nstrain, "pair:strain");
   }
   pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr};
-  const bool fails = failing();
-  pd_failure fail = fails ? failure_state() : pd_failure{};
-  pd_failure *fp = fails ? &fail : nullptr;
-  pd_tally t = {};
-  t.eatom = eflag_atom ? eatom : nullptr;
-  const pd_loop L = evaluation(v, evflag ? &t : nullptr, fp);
-  pd_ordinary_dilatation(&L, &st);
+  pd_ordinary_dilatation(&e.L, &st);
   bonds->sum_to_owners(sum);
 
   for (int i = 0; i < nlocal; i++) {
@@ -197,14 +193,13 @@ void PairPDOrdinary::compute(int eflag, int vflag)
     abstate[2 * i] = o.a;
     abstate[2 * i + 1] = o.b;
     if (evflag) {
-      t.energy += o.energy;
-      if (t.eatom) t.eatom[i] += o.energy;
+      e.tally.energy += o.energy;
+      if (e.tally.eatom) e.tally.eatom[i] += o.energy;
     }
   }
   bonds->forward(field_id[F_AB]);
-  pd_ordinary_forces(&L, &st);
-  if (fails) account_failure(fail);
-  if (evflag) tally(t);
+  pd_ordinary_forces(&e.L, &st);
+  end_evaluation(e);
 }
 
 void PairPDOrdinary::stable_dt_sum(double *sum)

@@ -227,7 +227,9 @@ pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd
     const int row = i * b->stride;
     bd.i = i;
     bd.ti = 0;
-    double si[PD_MAX_SUM_WIDTH], t[PD_MAX_SUM_WIDTH];
+    /* value() writes all width entries of t; zeroing it once per atom only
+     * keeps the compiler from doubting it */
+    double si[PD_MAX_SUM_WIDTH], t[PD_MAX_SUM_WIDTH] = {0.0};
     for (int c = 0; c < width; c++) si[c] = 0.0;
     const double xi[3] = {L->x[3 * i], L->x[3 * i + 1], L->x[3 * i + 2]};
     for (int k = 0; k < b->count[i]; k++) {

@@ -61,17 +61,26 @@ alive(const pd_corr_state *st, const pd_bond *bd, int damaged)
   return !damaged || (st->damage[bd->i] <= st->damage_max && st->damage[bd->j] <= st->damage_max);
 }
 
+/* The reference vector of a bond that counts in its atoms' sums; NULL,
+ * with its width sums zeroed, for a broken or fully damaged one. */
+PD_INLINE const double *
+counted_xi(const pd_corr_state *st, const pd_bond *bd, int damaged, double *t, int width)
+{
+  if (bd->broken || !alive(st, bd, damaged)) {
+    for (int c = 0; c < width; c++) t[c] = 0.0;
+    return NULL;
+  }
+  return st->xi + 3 * bd->idx;
+}
+
 /* The first pass's sums of one bond, the same at both ends. */
 PD_INLINE void
 bond_sums(void *s, const pd_bond *bd, double eps, double *t, int extended, int damaged)
 {
   const pd_corr_state *st = (const pd_corr_state *) s;
-  const double *xi = st->xi + 3 * bd->idx;
-  if (bd->broken || !alive(st, bd, damaged)) {
-    const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
-    for (int c = 0; c < width; c++) t[c] = 0.0;
-    return;
-  }
+  const double *xi =
+      counted_xi(st, bd, damaged, t, extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL);
+  if (!xi) return;
   const double w = bd->w;
   for (int r = 0; r < 3; r++)
     for (int c = 0; c < 3; c++) t[3 * r + c] = w * bd->d[r] * xi[c];
@@ -87,15 +96,15 @@ bond_shape_sums(void *s, const pd_bond *bd, double eps, double *t, int extended,
 {
   (void) eps;
   const pd_corr_state *st = (const pd_corr_state *) s;
-  const double *xi = st->xi + 3 * bd->idx;
-  const int width = extended ? PD_CORR_SHAPE_SUMS_EXTENDED : PD_CORR_SHAPE_SUMS_CLASSICAL;
-  for (int c = 0; c < width; c++) t[c] = 0.0;
-  if (bd->broken || !alive(st, bd, damaged)) return;
+  const double *xi = counted_xi(st, bd, damaged, t,
+                                extended ? PD_CORR_SHAPE_SUMS_EXTENDED : PD_CORR_SHAPE_SUMS_CLASSICAL);
+  if (!xi) return;
   const double w = bd->w;
   t[0] = w * xi[0] * xi[0], t[1] = w * xi[1] * xi[1], t[2] = w * xi[2] * xi[2];
   t[3] = w * xi[0] * xi[1], t[4] = w * xi[0] * xi[2], t[5] = w * xi[1] * xi[2];
   if (!extended) return;
   const double n[3] = {xi[0] / bd->r0, xi[1] / bd->r0, xi[2] / bd->r0};
+  for (int c = 6; c < PD_CORR_SHAPE_SUMS_EXTENDED; c++) t[c] = 0.0;
   pd_sym4_add_dyad(t + 6, n, w);
 }
 

@@ -1,0 +1,63 @@
+#include "pd_orientation.h"
+
+#include "pd_macros.h"
+
+#include <math.h>
+
+double pd_release(const pd_family *f, double delta, double thickness, pd_release_kind kind,
+                  const double n[3])
+{
+  double across = 0.0, all = 0.0;
+  for (int k = 0; k < f->n; k++) {
+    const pd_family_bond *b = f->bond + k;
+    const double normal = b->xi[0] * n[0] + b->xi[1] * n[1] + b->xi[2] * n[2];
+    if (kind == PD_RELEASE_ENERGY_LAW) {
+      /* sum (e.n)+ w / r against its orientation average <cos+> sum w / r */
+      all += b->w / b->r;
+      if (normal > 0.0) across += normal / b->r * b->w / b->r;
+    } else if (normal > 0.0) {
+      across += normal * b->r * b->w;
+    }
+  }
+  if (kind == PD_RELEASE_ENERGY_LAW) {
+    const double mean_cos = f->dim == 3 ? 0.25 : 1.0 / PD_PI;
+    return across / (mean_cos * all);
+  }
+  /* the continuum's sum, int over the half ball of (xi.n) |xi| dV, which
+   * the critical stretch is calibrated to release as G_c; per particle the
+   * lattice has its volume (3D) or area (2D) */
+  const double cell = f->dim == 3 ? f->volume : f->volume / thickness;
+  const double continuum = f->dim == 3 ? PD_PI * pow(delta, 5) / 5.0 : pow(delta, 4) / 2.0;
+  return across * cell / continuum;
+}
+
+static void widen(double g, double *lo, double *hi)
+{
+  if (g < *lo) *lo = g;
+  if (g > *hi) *hi = g;
+}
+
+void pd_release_range(const pd_family *f, double delta, double thickness, pd_release_kind kind,
+                      double *lo, double *hi)
+{
+  *lo = INFINITY, *hi = -INFINITY;
+  const int count = f->dim == 3 ? 4000 : 360;
+  for (int k = 0; k < count; k++) {
+    double n[3];
+    if (f->dim == 3) {
+      /* a Fibonacci spiral: even coverage without clustering at the poles */
+      const double z = 1.0 - (2.0 * k + 1.0) / count, s = sqrt(1.0 - z * z);
+      const double phi = k * PD_PI * (3.0 - sqrt(5.0));
+      n[0] = s * cos(phi), n[1] = s * sin(phi), n[2] = z;
+    } else {
+      const double a = 2.0 * PD_PI * k / count;
+      n[0] = cos(a), n[1] = sin(a), n[2] = 0.0;
+    }
+    widen(pd_release(f, delta, thickness, kind, n), lo, hi);
+  }
+  /* the lattice axes, where the extremes of a cubic family often sit */
+  for (int a = 0; a < f->dim; a++) {
+    const double n[3] = {a == 0, a == 1, a == 2};
+    widen(pd_release(f, delta, thickness, kind, n), lo, hi);
+  }
+}
