@@ -8,6 +8,7 @@ ratio x h, the measure the pair styles check (horizon > 1.01 spacings)."""
 import math
 import os
 import re
+import shutil
 import subprocess
 import time
 
@@ -67,6 +68,10 @@ def header(lattice, h, boundary):
     dims, style, a_over_h, _ = LATTICES[base_lattice(lattice)]
     return ("units si\n" + ("dimension 2\n" if dims == 2 else "") +
             f"boundary {boundary}\natom_style peri\natom_modify map array\n"
+            # room for the families' neighbor lists: 6 spacings with
+            # partial-volume quadrature (cutoff past the horizon) and
+            # units si's default skin overflow LAMMPS's default of 2000
+            "neigh_modify one 8000 page 80000\n"
             f"lattice {style} {a_over_h * h!r}\n")
 
 
@@ -169,7 +174,9 @@ def run(lmp, script, workdir, name="in.acc", variables=None, timeout=3600):
     path = os.path.join(workdir, name)
     with open(path, "w") as f:
         f.write(script)
-    cmd = [lmp, "-in", name, "-echo", "none", "-log", name + ".log"]
+    # line-buffered: an ERROR followed by MPI_Abort reaches the pipe
+    cmd = (["stdbuf", "-oL", "-eL"] if shutil.which("stdbuf") else []) + \
+        [lmp, "-in", name, "-echo", "none", "-log", name + ".log"]
     for k, v in (variables or {}).items():
         cmd += ["-var", k, str(v)]
     t0 = time.time()
