@@ -104,7 +104,9 @@ def measure(case, lmp, workdir):
     h = 1.0e-3
     dims = deck.dims_of(case["lattice"])
     delta = case["ratio"] * h
-    text, natoms, lengths = deck.periodic_block(case["lattice"], h, 2 * delta + 1.5 * h)
+    # longer than twice the bonds' reach (with partial quadrature: the
+    # horizon and half a cell diagonal)
+    text, natoms, lengths = deck.periodic_block(case["lattice"], h, 2 * (delta + h))
     V = deck.volume(case["lattice"], h)
     text += deck.pair_lines(case, h)
     text += ("compute pv all pressure NULL virial\n"

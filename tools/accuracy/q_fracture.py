@@ -98,7 +98,9 @@ def separation(case, theta, h=H):
     else:
         W *= 3          # no rows: a longer window averages the atoms' offsets to its edges
     T = W / 2 + 2 * delta + h
-    nz = math.ceil(2 * delta / a) + 1
+    # periodic along z: longer than twice the bonds' reach (the horizon, and
+    # with partial-volume quadrature half a cell diagonal more)
+    nz = math.ceil(2 * (delta + h) / a) + 1
     lz = nz * a
     ext = B + T + abs(c0) + a
     zr = f"{-0.5 * a!r} {0.5 * a!r}" if dims == 2 else f"0 {lz!r}"
