@@ -14,7 +14,7 @@ def per_step(m):
 
 def setting_text(case):
     return ", ".join(str(v) if k == "plane" else f"{k} {v}" for k, v in case.items()
-                     if k != "quadrature" or v != "point")
+                     if v is not None and k != "seed" and (k != "quadrature" or v != "point"))
 
 
 def plot_name(name, group, kind):
