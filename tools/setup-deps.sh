@@ -1,17 +1,10 @@
 #!/usr/bin/env bash
-# Install the Debian packages the build needs, only those that are missing.
-#   setup-deps.sh            what the build and make test need
-#   setup-deps.sh accuracy   also what make accuracy / make validate need
-#                            (gnuplot-nox draws the report's plots)
+# Install the Debian packages the build and the tests need, only those that
+# are missing (libfftw3-dev: tools/pd_exact; gnuplot-nox: the accuracy
+# report's plots, drawn by accuracy.smoke too).
 set -eu
 pkgs="build-essential cmake git pkg-config dpkg-dev openmpi-bin libopenmpi-dev
-      libfftw3-dev libpng-dev libjpeg-dev zlib1g-dev python3 ccache"
-for target in "$@"; do
-  case "$target" in
-    accuracy) pkgs="$pkgs gnuplot-nox" ;;
-    *) echo "setup-deps.sh: unknown target '$target' (known: accuracy)" >&2; exit 2 ;;
-  esac
-done
+      libfftw3-dev libpng-dev libjpeg-dev zlib1g-dev python3 ccache gnuplot-nox"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' \

@@ -17,7 +17,7 @@ def gnuplot():
     exe = shutil.which("gnuplot")
     if not exe:
         raise PlotError("gnuplot not found: the accuracy report's plots need it "
-                        "(Debian: apt-get install gnuplot-nox, or run tools/setup-deps.sh accuracy)")
+                        "(Debian: apt-get install gnuplot-nox, or run tools/setup-deps.sh)")
     return exe
 
 
