@@ -15,7 +15,7 @@ export CCACHE_NOHASHDIR := 1
 LMP := $(BUILD_DIR)/lmp
 STAMP_SETUP := $(PDEXT_CACHE)/.setup-ok
 
-.PHONY: all setup configure build plugin test demo bench validate clean
+.PHONY: all setup configure build plugin test demo bench accuracy validate clean
 
 all: build
 
@@ -49,8 +49,15 @@ demo: build
 bench: build
 	./bench/run.sh $(LMP)
 
-# Long runs at the papers' resolutions, with their reference numbers printed
+# Accuracy against cost: the sweeps (1-1.5 hours on 2 cores), the report
+# with its Pareto plots and recommendation table in build/accuracy/report.md
+accuracy: build
+	python3 tools/accuracy/run.py --mode full --lmp $(LMP) --exact $(BUILD_DIR)/pd_exact --out $(BUILD_DIR)/accuracy
+
+# Long runs at the papers' resolutions, with their reference numbers printed;
+# the short accuracy sweeps (under 10 minutes: build/accuracy-short/report.md)
 validate: build
+	python3 tools/accuracy/run.py --mode short --lmp $(LMP) --exact $(BUILD_DIR)/pd_exact --out $(BUILD_DIR)/accuracy-short
 	PDEXT_LMP=$(LMP) PDEXT_VALIDATE=1 python3 unittest/lammps/test_fracture.py
 	./examples/riemann-2d/run.sh $(LMP)
 	./examples/plate-impact-2d/run.sh $(LMP)

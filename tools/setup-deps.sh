@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Install the Debian packages the build needs, only those that are missing.
+# Install the Debian packages the build and the tests need, only those that
+# are missing (libfftw3-dev: tools/pd_exact; gnuplot-nox: the accuracy
+# report's plots, drawn by accuracy.smoke too).
 set -eu
 pkgs="build-essential cmake git pkg-config dpkg-dev openmpi-bin libopenmpi-dev
-      libfftw3-dev libpng-dev libjpeg-dev zlib1g-dev python3 ccache"
+      libfftw3-dev libpng-dev libjpeg-dev zlib1g-dev python3 ccache gnuplot-nox"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' \
