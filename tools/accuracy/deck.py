@@ -128,8 +128,8 @@ def pair_lines(setting, h, fail="", mat="PMMA"):
         words.append(f"model elastic strain {setting.get('strain', 'extended')}")
     if setting.get("influence") and style != "pd/bond":
         words.append(f"influence {setting['influence']}")
-    if setting.get("quadrature", "point") != "point":
-        words.append(f"quadrature {setting['quadrature']}")
+    # always named: the styles' defaults may differ (pd/bond: partial)
+    words.append(f"quadrature {setting.get('quadrature', 'point')}")
     if "recontact" in setting:
         words.append(f"recontact {setting['recontact']}")
     if model(setting) != "3d":

@@ -198,7 +198,7 @@ def deck(c, run_part):
          f"lattice {lat} {a!r}", f"region box block {region}", "create_box 1 box", "create_atoms 1 box",
          f"set group all density {RHO!r}", f"set group all volume {vol!r}"]
     plane = f" plane stress thickness {THICKNESS}" if dim == 2 else ""
-    quad = f" quadrature {c['quadrature']}" if c["quadrature"] != "point" else ""
+    quad = f" quadrature {c['quadrature']}"    # always named: pd/bond's default is partial
     if c["style"] == "pd/bond":
         s.append(f"pair_style pd/bond{plane}{quad}")
         s.append(f"pair_coeff * * pmb E {E!r} horizon {horizon!r}")
@@ -271,8 +271,7 @@ def run_exact(pd_exact, workdir, c, model, sites, lengths, horizon, time, tag):
         lines += ["plane stress", f"thickness {THICKNESS}"]
     if c["style"] == "pd/ordinary" and c.get("influence"):
         lines.append(f"influence {c['influence']}")
-    if c["quadrature"] != "point":
-        lines.append(f"quadrature {c['quadrature']}")
+    lines.append(f"quadrature {c['quadrature']}")
     inp = os.path.join(workdir, f"in.exact.{tag}")
     with open(inp, "w") as f:
         f.write("\n".join(lines) + "\n")

@@ -42,7 +42,8 @@ run 0
         err = max(abs(r["c_emin"] - want), abs(r["c_emax"] - want)) / want
         check_le(f"{style}: energy density K theta^2/2 at every atom", err, 1e-9, "round-off")
 
-script = block(10) + PAIRS["pd/bond"] + """compute dmg all pd/damage
+# point quadrature: the 122 lattice neighbours within the horizon
+script = block(10) + replace_exact(PAIRS["pd/bond"], "pair_style pd/bond", "pair_style pd/bond quadrature point") + """compute dmg all pd/damage
 compute dmax all reduce max c_dmg
 compute dsum all reduce sum c_dmg
 run 0

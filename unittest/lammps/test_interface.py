@@ -77,7 +77,8 @@ jump SELF again
 cases = [  # (label, 2D?, pair style, law)
     ("3D pd/ordinary energy (influence inverse)", False, "pd/ordinary", "energy"),
     ("3D pd/ordinary stretch", False, "pd/ordinary", "stretch"),
-    ("3D pd/bond stretch", False, "pd/bond", "stretch"),
+    # point quadrature: the bonds counted below are the lattice's within the horizon
+    ("3D pd/bond stretch", False, "pd/bond quadrature point", "stretch"),
     ("2D plane stress pd/ordinary energy (constant)", True, "pd/ordinary plane stress thickness 1e-3", "energy"),
     ("2D plane stress pd/ordinary energy (tupek)", True,
      "pd/ordinary plane stress thickness 1e-3 influence tupek", "energy"),
