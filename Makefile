@@ -49,7 +49,7 @@ demo: build
 bench: build
 	./bench/run.sh $(LMP)
 
-# Accuracy against cost: the sweeps (1-1.5 hours on 2 cores), the report
+# Accuracy against cost: the sweeps (about 3 hours on 2 cores), the report
 # with its Pareto plots and recommendation table in build/accuracy/report.md
 accuracy: build
 	python3 tools/accuracy/run.py --mode full --lmp $(LMP) --exact $(BUILD_DIR)/pd_exact --out $(BUILD_DIR)/accuracy

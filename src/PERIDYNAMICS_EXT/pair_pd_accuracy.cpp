@@ -32,7 +32,7 @@ namespace {
 // A bond's weight as the store gives it, for pd_lattice_family.
 struct StoreRule {
   const PDFamilySpec *spec;
-  int ti, weighted;
+  int weighted;
   double volume, horizon;
 };
 
@@ -87,7 +87,8 @@ std::string PairPD::site_lattice(double volume, pd_lattice &lat) const
 
 void PairPD::report_accuracy(const PDFamilySpec &spec)
 {
-  // one line per type that has atoms (the volume of its first atom here)
+  // lines per type that has atoms (the volume: the largest of each rank's
+  // first atom of the type)
   const int nt = atom->ntypes + 1;
   std::vector<double> mine(nt, 0.0), volume(nt, 0.0);
   for (int i = 0; i < atom->nlocal; i++)
@@ -100,7 +101,7 @@ void PairPD::report_accuracy(const PDFamilySpec &spec)
     if (!(volume[t] > 0.0) || !(h > 0.0) || !std::isfinite(h)) continue;
     pd_lattice lat;
     const std::string where = site_lattice(volume[t], lat);
-    StoreRule rule = {&spec, t, uses_weights(), volume[t], h};
+    StoreRule rule = {&spec, uses_weights(), volume[t], h};
     const double ratio = h / (dim() == 3 ? cbrt(lat.volume) : sqrt(lat.volume));
     const char *quad = partial_volumes() ? "partial" : "point";
     pd_linear_kind kind = PD_LINEAR_CLASSICAL;
