@@ -868,7 +868,7 @@ PDFamilySpec::Weight PairPD::weight_rule() const
 
 double PairPD::influence_at(int kind, int dim, const PDBondGeometry &g)
 {
-  return pd_influence((pd_influence_kind) kind, dim, MIN(g.r, g.horizon), g.horizon);
+  return pd_influence_of_cell((pd_influence_kind) kind, dim, g.r, g.horizon);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -38,7 +38,7 @@ typedef struct weight_ctx {
 static double bond_weight(const double xi[3], double r, void *ctx)
 {
   const weight_ctx *c = (const weight_ctx *) ctx;
-  double w = c->ordinary ? pd_influence(c->iw.kind, c->iw.dim, fmin(r, c->iw.horizon), c->iw.horizon) : 1.0;
+  double w = c->ordinary ? pd_influence_of_cell(c->iw.kind, c->iw.dim, r, c->iw.horizon) : 1.0;
   if (c->partial) w *= pd_cell_fraction(c->dim, xi, c->cell, c->iw.horizon);
   return w;
 }

@@ -97,3 +97,8 @@ double pd_partial_volume_legacy(double r, double delta, double lc)
   /* Same arithmetic order as PERI, so legacy runs agree to round-off. */
   return (-1.0 / (2 * half)) * r + (1.0 + ((delta - half) / (2 * half)));
 }
+
+double pd_influence_of_cell(pd_influence_kind kind, int dim, double r, double delta)
+{
+  return pd_influence(kind, dim, r < delta ? r : delta, delta);
+}

@@ -17,6 +17,11 @@ typedef enum pd_influence_kind {
 /* omega(r) for 0 < r <= delta in dimension dim (2 or 3); 0 beyond delta. */
 double pd_influence(pd_influence_kind kind, int dim, double r, double delta);
 
+/* omega of a partner whose cell reaches inside the horizon (partial-volume
+ * quadrature): its value at min(r, delta), since a partner centred beyond
+ * the horizon counts by the part of its cell inside it. */
+double pd_influence_of_cell(pd_influence_kind kind, int dim, double r, double delta);
+
 /* 1 if omega ~ 1/r at the origin (the 2D G_c integral diverges). */
 int pd_influence_singular(pd_influence_kind kind);
 
