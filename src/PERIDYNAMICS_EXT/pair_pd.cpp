@@ -766,7 +766,9 @@ void PairPD::begin_evaluation(Evaluation &e)
   e.tally.eatom = eflag_atom ? eatom : nullptr;
   e.fails = failing();
   e.fail = e.fails ? failure_state() : pd_failure{};
-  e.L = {&e.view, atom->type, atom->ntypes + 1, atom->x[0], atom->vfrac, atom->f[0],
+  // one type: the kernels load none
+  const int *type = atom->ntypes == 1 ? nullptr : atom->type;
+  e.L = {&e.view, type, atom->ntypes + 1, atom->x[0], atom->vfrac, atom->f[0],
          evflag ? &e.tally : nullptr, e.fails ? &e.fail : nullptr};
 }
 

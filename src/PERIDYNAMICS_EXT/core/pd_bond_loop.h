@@ -12,7 +12,13 @@
  * combination of effects (weights, tally, broken bonds); a material picks
  * one per evaluation with pd_run_kernel. The flags and hooks are constants
  * in each copy: an effect that is off costs nothing per bond, and no hook
- * is an indirect call. */
+ * is an indirect call.
+ *
+ * Speed: a row (one atom's bonds) goes in two passes, a vectorizable one
+ * that computes every bond's force (gathering the far ends' positions)
+ * and a scalar one that adds them onto the far ends. Rows with a broken
+ * or breaking bond go bond by bond. Both ways do the same arithmetic in
+ * the same order, so the results are the same to the bit. */
 #ifndef PD_BOND_LOOP_H
 #define PD_BOND_LOOP_H
 
@@ -42,7 +48,7 @@ pd_bond_load(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict ty
   const int j = b->far[idx];
   bd->j = j;
   bd->idx = idx;
-  bd->tj = type ? type[j] : 0;
+  bd->tj = type ? type[j] : 1;
   bd->tij = trow + bd->tj;
   bd->w = weighted ? b->weight[idx] : 1.0;
   bd->broken = 0;
@@ -57,18 +63,114 @@ pd_bond_load(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict ty
   }
 }
 
-/* The arrays are parameters so that 'restrict' holds (GCC honours it on
- * parameters): the force stores then do not make it reload x or the
- * material's tables. */
+/* One bond of the force loop: decode (broken bonds, recontact), ask the
+ * material and the failure law, add the force on i to fi and apply the
+ * reaction on j, tally. The arrays are parameters so that 'restrict' holds
+ * (GCC honours it on parameters): the force stores then do not make it
+ * reload x or the material's tables. */
+PD_INLINE void
+pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow,
+              const double *restrict x, const double xi[3], const double *restrict vol,
+              double *restrict f, double fi[3], pd_bond *bd, int idx, pd_break_sums *sums,
+              pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
+              pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
+              int weighted, int tallied, int failing, int directed)
+{
+  pd_bond_load(bd, b, type, trow, x, xi, fail, idx, weighted, failing, 1);
+  const double eps = strain(mat, bd);
+  if (failing && pd_bond_inactive(fail, bd->broken, eps)) return;
+  const pd_bond_force bf = force(mat, bd, eps);
+  const int i = bd->i, j = bd->j;
+  const double vi = vol[i], vj = vol[j];
+  /* a bond that fails releases its energy now and acts with half its
+   * force: the half-kicks around this step then carry it up to this
+   * step and no further, so the balance of kinetic, elastic and
+   * dissipated energy stays second order in dt (a bond dropped whole
+   * here would miss half a kick: first order) */
+  double share = 1.0;
+  if (failing && !bd->broken && breaks_now(fail, bd, eps, &bf)) {
+    pd_break_bond(fail, sums, bd, bf.release_i, bf.release_j, vi, vj, 1);
+    share = 0.5;
+  }
+  /* the force on i per V_i V_j */
+  double fij[3];
+  const double tl = directed || bd->len <= 0.0 ? 0.0 : share * bf.t / bd->len;
+  for (int c = 0; c < 3; c++) fij[c] = directed ? share * bf.v[c] : tl * bd->d[c];
+  for (int c = 0; c < 3; c++) {
+    fi[c] += vj * fij[c];
+    f[3 * j + c] -= vi * fij[c];
+  }
+  if (tallied) {
+    /* a breaking bond's energy is booked as dissipated instead */
+    const double ei = share == 1.0 ? bf.stored_i : 0.0, ej = share == 1.0 ? bf.stored_j : 0.0;
+    tally->energy += ei * vj + ej * vi;
+    if (tally->eatom) {
+      tally->eatom[i] += ei * vj;
+      tally->eatom[j] += ej * vi;
+    }
+    const double dij[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
+    if (directed) {
+      const double fv[3] = {vi * vj * fij[0], vi * vj * fij[1], vi * vj * fij[2]};
+      pd_tally_virial_pair(tally, dij, fv);
+    } else {
+      pd_tally_virial(tally, dij, -tl * vi * vj);
+    }
+  }
+  if (failing && !bd->broken && breaks_after(fail, bd, eps))
+    pd_break_bond(fail, sums, bd, bf.release_i, bf.release_j, vi, vj, 0);
+}
+
+/* Bonds a row's first pass takes at a time (its buffers live on the stack). */
+enum { PD_CHUNK = 64 };
+
+/* The first pass over bonds k0 .. k0+m-1 of row 'row': every intact bond's
+ * force on i per V_i V_j, into g (component c of bond k at c * PD_CHUNK + k),
+ * with no store that another
+ * bond could read, so that the compiler vectorizes it (the far ends'
+ * positions gathered). Returns nonzero if some bond needs the full
+ * per-bond path (broken, or breaking now by a law that can be asked
+ * ahead): the caller then takes the chunk bond by bond instead. */
+PD_INLINE int
+pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int trow, int ti,
+               const double *restrict x, const double xi[3], int i, int row, int m,
+               double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
+               pd_force_fn force, pd_breaks_now_fn breaks_now, int weighted, int failing)
+{
+  int special = 0;
+  for (int k = 0; k < m; k++) {
+    pd_bond bd;
+    bd.i = i;
+    bd.ti = ti;
+    pd_bond_load(&bd, b, type, trow, x, xi, NULL, row + k, weighted, 0, 1);
+    if (failing) {
+      special |= bd.r0 < 0.0;
+      bd.r0 = fabs(bd.r0);
+    }
+    const double eps = strain(mat, &bd);
+    const pd_bond_force bf = force(mat, &bd, eps);
+    if (failing) special |= breaks_now(fail, &bd, eps, &bf);
+    const double tl = bd.len > 0.0 ? bf.t / bd.len : 0.0;
+    for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = tl * bd.d[c];
+  }
+  return special;
+}
+
+/* Walks every bond once. Evaluations that tally, directed materials and
+ * laws that cannot be asked ahead go bond by bond (pd_force_bond); the
+ * others take each row in chunks: the vectorized first pass, then the
+ * scalar sums onto i and its (distinct) far ends, in the same order and
+ * with the same arithmetic as bond by bond. */
 PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
                  const double *restrict x, const double *restrict vol, double *restrict f,
                  pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                  pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-                 int weighted, int tallied, int failing, int directed)
+                 int weighted, int tallied, int failing, int directed, int ahead)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
+  const int chunked = !tallied && !directed && ahead;
   pd_bond bd;
+  double g[3 * PD_CHUNK];
   for (int i = 0; i < b->nowner; i++) {
     const int n = b->count[i];
     if (!n) continue;
@@ -76,52 +178,31 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
     const double vi = vol[i];
     double fi[3] = {0.0, 0.0, 0.0};
     bd.i = i;
-    bd.ti = type[i];
+    bd.ti = type ? type[i] : 1;
     const int trow = bd.ti * ntypes;
     const double xi[3] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
-    for (int k = 0; k < n; k++) {
-      pd_bond_load(&bd, b, type, trow, x, xi, fail, row + k, weighted, failing, 1);
-      const double eps = strain(mat, &bd);
-      if (failing && pd_bond_inactive(fail, bd.broken, eps)) continue;
-      const pd_bond_force bf = force(mat, &bd, eps);
-      const int j = bd.j;
-      const double vj = vol[j];
-      /* a bond that fails releases its energy now and acts with half its
-       * force: the half-kicks around this step then carry it up to this
-       * step and no further, so the balance of kinetic, elastic and
-       * dissipated energy stays second order in dt (a bond dropped whole
-       * here would miss half a kick: first order) */
-      double share = 1.0;
-      if (failing && !bd.broken && breaks_now(fail, &bd, eps, &bf)) {
-        pd_break_bond(fail, &sums, &bd, bf.release_i, bf.release_j, vi, vj, 1);
-        share = 0.5;
-      }
-      /* the force on i per V_i V_j */
-      double fij[3];
-      const double tl = directed || bd.len <= 0.0 ? 0.0 : share * bf.t / bd.len;
-      for (int c = 0; c < 3; c++) fij[c] = directed ? share * bf.v[c] : tl * bd.d[c];
-      for (int c = 0; c < 3; c++) {
-        fi[c] += vj * fij[c];
-        f[3 * j + c] -= vi * fij[c];
-      }
-      if (tallied) {
-        /* a breaking bond's energy is booked as dissipated instead */
-        const double ei = share == 1.0 ? bf.stored_i : 0.0, ej = share == 1.0 ? bf.stored_j : 0.0;
-        tally->energy += ei * vj + ej * vi;
-        if (tally->eatom) {
-          tally->eatom[i] += ei * vj;
-          tally->eatom[j] += ej * vi;
+    for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
+      const int m = n - k0 < PD_CHUNK ? n - k0 : PD_CHUNK;
+      /* (one copy of the first pass for one atom type: no type loads) */
+      if (chunked &&
+          !(type ? pd_force_chunk(b, type, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
+                                  strain, force, breaks_now, weighted, failing)
+                 : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
+                                  strain, force, breaks_now, weighted, failing))) {
+        for (int k = 0; k < m; k++) {
+          const int j = b->far[row + k0 + k];
+          const double vj = vol[j];
+          for (int c = 0; c < 3; c++) {
+            fi[c] += vj * g[c * PD_CHUNK + k];
+            f[3 * j + c] -= vi * g[c * PD_CHUNK + k];
+          }
         }
-        const double dij[3] = {-bd.d[0], -bd.d[1], -bd.d[2]};
-        if (directed) {
-          const double fv[3] = {vi * vj * fij[0], vi * vj * fij[1], vi * vj * fij[2]};
-          pd_tally_virial_pair(tally, dij, fv);
-        } else {
-          pd_tally_virial(tally, dij, -tl * vi * vj);
-        }
+        continue;
       }
-      if (failing && !bd.broken && breaks_after(fail, &bd, eps))
-        pd_break_bond(fail, &sums, &bd, bf.release_i, bf.release_j, vi, vj, 0);
+      for (int k = 0; k < m; k++)
+        pd_force_bond(b, type, trow, x, xi, vol, f, fi, &bd, row + k0 + k, &sums, tally, fail,
+                      mat, strain, force, breaks_now, breaks_after, weighted, tallied, failing,
+                      directed);
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
   }
@@ -131,10 +212,10 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
 PD_INLINE void
 pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn force,
               pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after, int weighted,
-              int tallied, int failing, int directed)
+              int tallied, int failing, int directed, int ahead)
 {
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->tally, L->fail, mat, strain,
-                   force, breaks_now, breaks_after, weighted, tallied, failing, directed);
+                   force, breaks_now, breaks_after, weighted, tallied, failing, directed, ahead);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */
@@ -144,7 +225,7 @@ typedef void (*pd_kernel)(const pd_loop *L, void *mat);
   static void prefix##_##law##_##failing##weighted##tallied(const pd_loop *L, void *mat) \
   {                                                                                       \
     pd_force_loop(L, mat, strain, force, pd_law_##law##_now, pd_law_##law##_after,        \
-                  weighted, tallied, failing, directed);                                  \
+                  weighted, tallied, failing, directed, pd_law_##law##_ahead);            \
   }
 #define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing, directed) \
   PD_KERNEL_(prefix, strain, force, law, failing, 0, 0, directed)             \
@@ -195,7 +276,7 @@ pd_reference_sums(const pd_bond_view *restrict b, const int *type, int ntypes,
   for (int i = 0; i < b->nowner; i++) {
     const int row = i * b->stride;
     bd.i = i;
-    bd.ti = type ? type[i] : 0;
+    bd.ti = type ? type[i] : 1;
     const int trow = bd.ti * ntypes;
     for (int k = 0; k < b->count[i]; k++) {
       if (intact_only && pd_bond_broken(b->len0[row + k])) continue;
@@ -208,14 +289,62 @@ pd_reference_sums(const pd_bond_view *restrict b, const int *type, int ntypes,
   }
 }
 
+enum { PD_MAX_SUM_WIDTH = 48 };
+typedef void (*pd_bond_strain_value_fn)(void *ctx, const pd_bond *bd, double eps, double *t);
+
+/* One bond of pd_current_sums: its values onto sum[j] and si (atom i's). */
+PD_INLINE void
+pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si, int width,
+                    const double xi[3], pd_bond *bd, int idx, void *mat, pd_strain_fn strain,
+                    pd_bond_strain_value_fn value, int failing)
+{
+  const pd_bond_view *restrict b = L->b;
+  /* value() writes all width entries of t; zeroing them only keeps the
+   * compiler from doubting it */
+  double t[PD_MAX_SUM_WIDTH];
+  for (int c = 0; c < width; c++) t[c] = 0.0;
+  pd_bond_load(bd, b, NULL, 0, L->x, xi, L->fail, idx, b->weight != NULL, failing, 1);
+  const double eps = strain(mat, bd);
+  if (failing && pd_bond_inactive(L->fail, bd->broken, eps)) return;
+  value(mat, bd, eps, t);
+  const double vj = L->vol[bd->j], vi = L->vol[bd->i];
+  for (int c = 0; c < width; c++) {
+    si[c] += t[c] * vj;
+    sum[bd->j * width + c] += t[c] * vi;
+  }
+}
+
+/* Its first pass over bonds k0 .. k0+m-1 of a row, as pd_force_chunk: the
+ * values of every bond into tb (width per bond); nonzero if a bond is
+ * broken (the caller then takes the chunk bond by bond). */
+PD_INLINE int
+pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
+                     double *restrict tb, void *mat, pd_strain_fn strain,
+                     pd_bond_strain_value_fn value, int failing)
+{
+  const pd_bond_view *restrict b = L->b;
+  int broken = 0;
+  for (int k = 0; k < m; k++) {
+    pd_bond bd;
+    bd.i = i;
+    bd.ti = 0;
+    pd_bond_load(&bd, b, NULL, 0, L->x, xi, NULL, row + k, b->weight != NULL, 0, 1);
+    if (failing) {
+      broken |= bd.r0 < 0.0;
+      bd.r0 = fabs(bd.r0);
+    }
+    value(mat, &bd, strain(mat, &bd), tb + k * width);
+  }
+  return broken;
+}
+
 /* The same in the current configuration, over the bonds that act (a broken
  * bond only in compression, with recontact): value(ctx, bond, strain, t)
  * gives 'width' numbers t, added as t V_j onto sum[i * width ..] and t V_i
  * onto sum[j * width ..]. A state-based material's first pass (dilatation,
- * deformation gradient); types are not loaded. */
-enum { PD_MAX_SUM_WIDTH = 48 };
-typedef void (*pd_bond_strain_value_fn)(void *ctx, const pd_bond *bd, double eps, double *t);
-
+ * deformation gradient); types are not loaded. Rows go in chunks as in
+ * pd_force_loop_on: a vectorizable pass computes the values, a scalar one
+ * adds them in the order and with the arithmetic of bond by bond. */
 PD_INLINE void
 pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd_strain_fn strain,
                 pd_bond_strain_value_fn value, int failing)
@@ -223,25 +352,31 @@ pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd
   const pd_bond_view *restrict b = L->b;
   const double *restrict vol = L->vol;
   pd_bond bd;
+  double tb[PD_CHUNK * PD_MAX_SUM_WIDTH];
   for (int i = 0; i < b->nowner; i++) {
-    const int row = i * b->stride;
+    const int row = i * b->stride, n = b->count[i];
+    const double vi = vol[i];
     bd.i = i;
     bd.ti = 0;
-    /* value() writes all width entries of t; zeroing it once per atom only
-     * keeps the compiler from doubting it */
-    double si[PD_MAX_SUM_WIDTH], t[PD_MAX_SUM_WIDTH] = {0.0};
+    double si[PD_MAX_SUM_WIDTH];
     for (int c = 0; c < width; c++) si[c] = 0.0;
     const double xi[3] = {L->x[3 * i], L->x[3 * i + 1], L->x[3 * i + 2]};
-    for (int k = 0; k < b->count[i]; k++) {
-      pd_bond_load(&bd, b, NULL, 0, L->x, xi, L->fail, row + k, b->weight != NULL, failing, 1);
-      const double eps = strain(mat, &bd);
-      if (failing && pd_bond_inactive(L->fail, bd.broken, eps)) continue;
-      value(mat, &bd, eps, t);
-      const double vj = vol[bd.j], vi = vol[i];
-      for (int c = 0; c < width; c++) {
-        si[c] += t[c] * vj;
-        sum[bd.j * width + c] += t[c] * vi;
+    for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
+      const int m = n - k0 < PD_CHUNK ? n - k0 : PD_CHUNK;
+      if (!pd_current_sum_chunk(L, width, xi, i, row + k0, m, tb, mat, strain, value, failing)) {
+        for (int k = 0; k < m; k++) {
+          const int j = b->far[row + k0 + k];
+          const double vj = vol[j];
+          for (int c = 0; c < width; c++) {
+            si[c] += tb[k * width + c] * vj;
+            sum[j * width + c] += tb[k * width + c] * vi;
+          }
+        }
+        continue;
       }
+      for (int k = 0; k < m; k++)
+        pd_current_sum_bond(L, sum, si, width, xi, &bd, row + k0 + k, mat, strain, value,
+                            failing);
     }
     for (int c = 0; c < width; c++) sum[i * width + c] += si[c];
   }

@@ -14,6 +14,10 @@ typedef struct pd_law_legacy {
                              no intact bond was seen (owned + ghost) */
 } pd_law_legacy;
 
+/* Not asked ahead of a bond's turn: _after decides, and it updates the
+ * atoms' s0. */
+enum { pd_law_legacy_ahead = 0 };
+
 static inline int pd_law_legacy_now(const pd_failure *f, const pd_bond *bd, double eps,
                                     const pd_bond_force *bf)
 {

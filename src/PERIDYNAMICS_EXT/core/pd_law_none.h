@@ -5,6 +5,10 @@
 
 #include "pd_failure.h"
 
+/* The bond loop may ask _now ahead of a bond's turn, and again: no side
+ * effects, and nothing breaks after. */
+enum { pd_law_none_ahead = 1 };
+
 static inline int pd_law_none_now(const pd_failure *f, const pd_bond *bd, double eps,
                                   const pd_bond_force *bf)
 {

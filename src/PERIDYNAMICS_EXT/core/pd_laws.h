@@ -4,6 +4,9 @@
  *   pd_law_<name>_now   does an intact bond break in this evaluation,
  *                       before its force acts (it then acts with half)?
  *   pd_law_<name>_after does it break after its force acted?
+ *   pd_law_<name>_ahead 1 if the loop may ask _now ahead of a bond's turn
+ *                       and again (so it can compute a row's forces in a
+ *                       vectorized pass), 0 if _after decides or has effects.
  * To add a law: write its header, add one line to the list below and its
  * #include to pd_law_hooks.h. */
 #ifndef PD_LAWS_H

@@ -7,7 +7,8 @@
 
 typedef struct pd_loop {
   const pd_bond_view *b;
-  const int *type;
+  const int *type;         /* per atom (owned + ghost), or NULL when every atom is of
+                              type 1: the loops then load no type */
   int ntypes;              /* row length of the type-pair tables (pd_bond.tij) */
   const double *x, *vol;   /* 3 per atom; 1 per atom (owned + ghost) */
   double *f;               /* force density, 3 per atom */
