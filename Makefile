@@ -5,6 +5,9 @@ PDEXT_CACHE       ?= $(HOME)/.cache/pdext
 BUILD_DIR         ?= build
 JOBS              ?= $(shell nproc)
 LAMMPS_SOURCE_DIR ?=
+# PORTABLE=1: the C core for any CPU of this architecture (no -march=native),
+# for binaries and plugins copied to other machines
+PORTABLE          ?= 0
 
 # ccache keeps compiled LAMMPS objects outside the work tree, so a fresh clone
 # recompiles nothing that did not change.
@@ -30,6 +33,7 @@ configure: | $(STAMP_SETUP)
 	src="$(LAMMPS_SOURCE_DIR)"; \
 	[ -n "$$src" ] || src=$$(./tools/fetch-lammps.sh $(PDEXT_CACHE)); \
 	cmake -S . -B $(BUILD_DIR) -DLAMMPS_SOURCE_DIR="$$src" \
+	  -DPDEXT_PORTABLE=$(if $(filter 1,$(PORTABLE)),ON,OFF) \
 	  -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
 
 build: configure

@@ -21,7 +21,9 @@ static inline int pd_order_kind(double m)
 PD_INLINE double
 pd_bond_strain(int kind, double m, const pd_bond *bd)
 {
-  if (kind == PD_ORDER_HALF) return (bd->len - bd->r0) / bd->r0;
+  /* times 1/|xi| (not divided by |xi|): the force's strain rate is that
+   * same 1/|xi|, so a bond of pd/ordinary divides once less */
+  if (kind == PD_ORDER_HALF) return (bd->len - bd->r0) * (1.0 / bd->r0);
   if (kind == PD_ORDER_LOG) return log(bd->len / bd->r0);
   return expm1(2.0 * m * log(bd->len / bd->r0)) / (2.0 * m);
 }
