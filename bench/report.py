@@ -26,15 +26,13 @@ MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CO
 
 BLOCK_STEPS = 200
 # Every style of the block, in the order of one pass (bench/pairs/<style>.in)
+# (each effect next to its baseline, so that the two see about the same load)
 BLOCK_STYLES = [
-    "peri_pmb", "pd_bond", "pd_bond_legacy",
-    "peri_lps", "pd_ordinary", "pd_ordinary_legacy",
-    "pd_ordinary_m0", "pd_ordinary_m-1",
-    "pd_bond_fail_stretch", "pd_bond_legacy_fail",
-    "pd_ordinary_fail_stretch", "pd_ordinary_fail_energy",
-    "pd_bond_contact", "pd_ordinary_contact",
-    "pd_bond_microplastic",
-    "pd_corr_classical", "pd_corr_extended", "pd_corr_j2",
+    "peri_pmb", "pd_bond", "pd_bond_fail_stretch", "pd_bond_contact", "pd_bond_microplastic",
+    "pd_bond_legacy", "pd_bond_legacy_fail",
+    "peri_lps", "pd_ordinary", "pd_ordinary_fail_stretch", "pd_ordinary_fail_energy",
+    "pd_ordinary_contact", "pd_ordinary_m0", "pd_ordinary_m-1", "pd_ordinary_legacy",
+    "pd_corr_classical", "pd_corr_j2", "pd_corr_extended",
 ]
 # The legacy styles have no bond count of their own in the log (PERI prints
 # each bond twice): they use the families of this style, the same ones
@@ -76,11 +74,19 @@ MEMORY_SIZES, MEMORY_STYLE, MEMORY_BAR = (48, 64), "pd_bond", 35.0
 BUILD_BAR = 20.0                           # family build, in steps
 MPI_SIZE, MPI_RANKS, MPI_BAR = 48, 2, 0.93
 
+# The clock of the block's tables and the sweep's throughput: "cpu" = the
+# timed run's CPU time (Loop time x LAMMPS's "% CPU use"), which leaves out
+# the time the process waited for a CPU that others were using; "wall" =
+# Loop time. The same on a quiet machine. --clock sets it.
+CLOCK = "cpu"
+CLOCK_NAME = {"cpu": "CPU time", "wall": "Loop time (wall)"}
+
 # ----------------------------------------------------------------- the log
 
 RE_BENCH = re.compile(r"^BENCH (\S+)")
 RE_LOOP = re.compile(r"^Loop time of (\S+) on (\d+) procs for (\d+) steps")
 RE_BONDS = re.compile(r"^pd/bonds: (\d+) bonds, ")
+RE_CPU = re.compile(r"^([0-9.]+)% CPU use with")
 RE_BROKEN = re.compile(r"^pd/bonds: \d+ bonds kept, (\d+) of them broken")
 RE_PERI_BONDS = re.compile(r"^\s*total # of bonds = (\d+)")
 RE_CONTACT = re.compile(r"^pd/contact: list cutoff .*?: ([0-9.]+) neighbours per atom")
@@ -88,7 +94,7 @@ RE_CONTACT = re.compile(r"^pd/contact: list cutoff .*?: ([0-9.]+) neighbours per
 
 def new_record():
     return {"loop": None, "ranks": None, "steps": None, "bonds": None,
-            "peri_bonds": None, "broken": None, "contact_nb": None}
+            "peri_bonds": None, "broken": None, "contact_nb": None, "cpu": None}
 
 
 def parse_section(lines, rec):
@@ -98,6 +104,9 @@ def parse_section(lines, rec):
         m = RE_LOOP.match(line)
         if m and int(m.group(3)) > 0 and rec["loop"] is None:
             rec["loop"], rec["ranks"], rec["steps"] = float(m.group(1)), int(m.group(2)), int(m.group(3))
+        m = RE_CPU.match(line)
+        if m and rec["loop"] is not None and rec["cpu"] is None:
+            rec["cpu"] = float(m.group(1))      # the line after the timed run's Loop time
         m = RE_BONDS.match(line)
         if m and rec["bonds"] is None:
             rec["bonds"] = int(m.group(1))
@@ -111,6 +120,13 @@ def parse_section(lines, rec):
         if m:
             rec["contact_nb"] = float(m.group(1))
     return rec
+
+
+def timed(rec):
+    """The timed run's time (s) on CLOCK."""
+    if CLOCK == "cpu" and rec["cpu"] is not None:
+        return rec["loop"] * rec["cpu"] / 100
+    return rec["loop"]
 
 
 def parse_block_log(text):
@@ -161,13 +177,15 @@ def build_lines(lmp):
     options = re.findall(r"^(PDEXT_\w+):(BOOL|STRING)=(.*)$", cache, re.M)
     if options:
         out.append("options: " + ", ".join(f"{k}={v}" for k, _, v in options))
-    top = os.path.join(build, "CMakeFiles")
-    for target in sorted(os.listdir(top)) if os.path.isdir(top) else []:
-        flags = os.path.join(top, target, "flags.make")
-        if os.path.exists(flags):
-            for line in open(flags):
-                if re.match(r"(C|CXX)_FLAGS = ", line):
-                    out.append(f"{target.replace('.dir', '')} {line.strip()}")
+    # the package's own targets (build/CMakeFiles/*.dir) and LAMMPS with its glue
+    dirs = [os.path.join(build, "CMakeFiles"), os.path.join(build, "lammps", "CMakeFiles")]
+    for top in dirs:
+        for target in sorted(os.listdir(top)) if os.path.isdir(top) else []:
+            flags = os.path.join(top, target, "flags.make")
+            if target != "lmp.dir" and os.path.exists(flags):
+                for line in open(flags):
+                    if re.match(r"(C|CXX)_FLAGS = ", line):
+                        out.append(f"{target.replace('.dir', '')} {line.strip()}")
     return out
 
 
@@ -202,11 +220,11 @@ def run_lmp(lmp, script, variables, log, ranks=1):
 
 
 def mbonds(rec):
-    return rec["bonds"] * rec["steps"] / rec["loop"] / 1e6 / rec["ranks"]
+    return rec["bonds"] * rec["steps"] / timed(rec) / 1e6 / rec["ranks"]
 
 
 def ns_per_bond(rec):
-    return 1e9 * rec["loop"] * rec["ranks"] / (rec["bonds"] * rec["steps"])
+    return 1e9 * timed(rec) * rec["ranks"] / (rec["bonds"] * rec["steps"])
 
 
 def mark(value, bar, at_least, unit="x"):
@@ -228,8 +246,8 @@ def run_block(lmp, outdir, passes):
         runs.setdefault(style, []).append(rec)
     best = {}
     for style, recs in runs.items():
-        rec = dict(min(recs, key=lambda r: r["loop"]))
-        rec["times"] = [r["loop"] for r in recs]
+        rec = dict(min(recs, key=timed))
+        rec["times"] = [timed(r) for r in recs]    # per pass, in order
         best[style] = rec
     fill_legacy_bonds(best)
     return best, wall
@@ -246,41 +264,51 @@ def fill_legacy_bonds(best):
 
 def print_throughput(best, passes):
     print()
-    print(f"Throughput: Loop time of each style, the smaller of {passes} interleaved passes "
-          f"(1 rank, {BLOCK_STEPS} steps)")
-    passes_head = " ".join(f"{'pass ' + str(i + 1):>8s}" for i in range(passes))
-    print(f"  {'style':26s} {'unique bonds':>12s} {passes_head} {'Loop (s)':>8s} "
-          f"{'M bonds/s':>10s} {'ns/bond':>8s} {'broken':>6s}")
+    print(f"Throughput (1 rank, {BLOCK_STEPS} steps, {passes} interleaved passes; time = {CLOCK_NAME[CLOCK]} "
+          f"of the timed run, the smallest pass)")
+    passes_head = " ".join(f"{'pass ' + str(i + 1):>7s}" for i in range(passes))
+    print(f"  {'style':26s} {'unique bonds':>12s} {passes_head} {'time (s)':>8s} {'Loop (s)':>8s} "
+          f"{'CPU %':>5s} {'M bonds/s':>10s} {'ns/bond':>8s} {'broken':>6s}")
     for style in BLOCK_STYLES:
         rec = best.get(style)
         if not rec:
             continue
-        times = " ".join(f"{t:8.3f}" for t in rec["times"])
+        times = " ".join(f"{t:7.3f}" for t in rec["times"])
         broken = "-" if rec["broken"] is None else str(rec["broken"])
-        print(f"  {style:26s} {rec['bonds']:12d} {times} {rec['loop']:8.3f} "
+        print(f"  {style:26s} {rec['bonds']:12d} {times} {timed(rec):8.3f} {rec['loop']:8.3f} {rec['cpu']:5.1f} "
               f"{mbonds(rec):10.1f} {ns_per_bond(rec):8.2f} {broken:>6s}")
-    print("  (M bonds/s = million unique bonds evaluated per second per core; ns/bond = per bond "
-          "per step; broken = bonds broken in the run, from fix pd/bonds)")
+    print("  pass i, time: the time of each pass and the smallest; Loop = LAMMPS's Loop time (wall) of that")
+    print("  pass, CPU % its CPU use (below 100: the process waited for a CPU); M bonds/s = million unique")
+    print("  bonds per second per core, ns/bond = per bond per step, both from time; broken = bonds broken")
+    print("  in the timed run (fix pd/bonds)")
+
+
+def per_pass(num, den):
+    """The ratio in each pass: 'passes 1.02 1.05'."""
+    return "passes " + " ".join(f"{a / b:.2f}" for a, b in zip(num["times"], den["times"]))
 
 
 def print_speedups(best):
     print()
-    print("Speed-up over the legacy PERI styles (legacy Loop time / pd Loop time, same block and steps)")
+    print("Speed-up over the legacy PERI styles (legacy time / pd time, same block and steps;")
+    print("in brackets within each pass)")
     for new, old, goal in SPEEDUPS:
         if new in best and old in best:
-            ratio = best[old]["loop"] / best[new]["loop"]
-            print(f"  {new:26s} vs {old:10s} {ratio:7.2f}x   {mark(ratio, goal, True)}")
+            ratio = timed(best[old]) / timed(best[new])
+            print(f"  {new:26s} vs {old:10s} {ratio:7.2f}x   {mark(ratio, goal, True):24s} "
+                  f"({per_pass(best[old], best[new])})")
 
 
 def print_effects(best):
     print()
-    print("Cost of each effect (Loop time with the effect / Loop time of the baseline; elastic run, "
-          "no bond breaks)")
+    print("Cost of each effect (time with the effect / time of the baseline, smallest passes;")
+    print("elastic run, no bond breaks; in brackets the ratio within each pass)")
     print(f"  {'effect':16s} {'style':26s} {'baseline':20s} {'cost':>7s}")
     for effect, style, base, bar in EFFECTS:
         if style in best and base in best:
-            ratio = best[style]["loop"] / best[base]["loop"]
-            print(f"  {effect:16s} {style:26s} {base:20s} {ratio:6.2f}x   {mark(ratio, bar, False)}")
+            ratio = timed(best[style]) / timed(best[base])
+            print(f"  {effect:16s} {style:26s} {base:20s} {ratio:6.2f}x   {mark(ratio, bar, False):24s} "
+                  f"({per_pass(best[style], best[base])})")
     for style, rec in best.items():
         if rec["contact_nb"] is not None:
             print(f"  ({style}: the contact list holds {rec['contact_nb']:g} neighbours per atom, "
@@ -325,17 +353,18 @@ def run_sweep(lmp, outdir):
 
 def print_sweep(recs):
     print()
-    print("Size sweep (1 rank; each style and size its own lmp process, one run each)")
+    print(f"Size sweep (1 rank; each style and size its own lmp process, one run each; M bonds/s and ns/bond")
+    print(f"from the {CLOCK_NAME[CLOCK]})")
     print(f"  {'style':12s} {'size':>5s} {'atoms':>7s} {'unique bonds':>12s} {'steps':>5s} {'Loop (s)':>8s} "
-          f"{'M bonds/s':>10s} {'ns/bond':>8s} {'build (s)':>9s} {'build (steps)':>13s} "
+          f"{'CPU %':>5s} {'M bonds/s':>10s} {'ns/bond':>8s} {'build (s)':>9s} {'build (steps)':>13s} "
           f"{'peak RSS (MiB)':>14s} {'bytes/bond':>10s}")
     for r in recs:
         atoms = r["n"] ** 3
         print(f"  {r['style']:12s} {str(r['n']) + '^3':>5s} {atoms:7d} {r['bonds']:12d} {r['steps']:5d} "
-              f"{r['loop']:8.3f} {mbonds(r):10.1f} {ns_per_bond(r):8.2f} {r['build_s']:9.3f} "
+              f"{r['loop']:8.3f} {r['cpu']:5.1f} {mbonds(r):10.1f} {ns_per_bond(r):8.2f} {r['build_s']:9.3f} "
               f"{r['build_steps']:13.1f} {r['rss_kib'] / 1024:14.1f} {1024 * r['rss_kib'] / r['bonds']:10.1f}")
     print("  build = setup of the first 'run 0' (families built) minus setup of a second one (families kept),")
-    print(f"  wall clock; in steps = build / (Loop time / steps); bar <= {BUILD_BAR:g} steps. peak RSS = max")
+    print(f"  wall clock; in steps = build / (Loop time / steps), bar <= {BUILD_BAR:g} steps. peak RSS = max")
     print("  resident set of the whole lmp process (os.wait4), bytes/bond = peak RSS / unique bonds")
     by = {(r["style"], r["n"]): r for r in recs}
     print()
@@ -372,19 +401,23 @@ def print_mpi(rows):
           f"same steps): T1 / ({MPI_RANKS} T{MPI_RANKS}) of Loop time")
     for style, one, two in rows:
         eff = one["loop"] / (MPI_RANKS * two["loop"])
-        print(f"  {style:12s} T1 {one['loop']:7.3f} s  T{MPI_RANKS} {two['loop']:7.3f} s  "
-              f"efficiency {100 * eff:5.1f}%   {mark(100 * eff, 100 * MPI_BAR, True, '%')}")
+        print(f"  {style:12s} T1 {one['loop']:7.3f} s ({one['cpu']:5.1f}% CPU)  "
+              f"T{MPI_RANKS} {two['loop']:7.3f} s ({two['cpu']:5.1f}% CPU)  efficiency {100 * eff:5.1f}%   {mark(100 * eff, 100 * MPI_BAR, True, '%')}")
 
 
 # -------------------------------------------------------------------- main
 
 def main():
+    global CLOCK
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--lmp", required=True)
     ap.add_argument("--full", action="store_true", help="add the size sweep, memory and 2 ranks")
-    ap.add_argument("--passes", type=int, default=2, help="interleaved passes over the block's styles")
+    ap.add_argument("--passes", type=int, default=3, help="interleaved passes over the block's styles")
+    ap.add_argument("--clock", choices=("cpu", "wall"), default=CLOCK,
+                    help="the time of the tables: the timed run's CPU time (default) or its Loop time")
     ap.add_argument("--logs", help="keep the LAMMPS logs here (default: a new temporary directory)")
     args = ap.parse_args()
+    CLOCK = args.clock
     lmp = os.path.realpath(args.lmp)
     outdir = args.logs or tempfile.mkdtemp(prefix="pdext-bench-")
     os.makedirs(outdir, exist_ok=True)
