@@ -71,7 +71,8 @@ SWEEP_STYLES = ["pd_bond", "pd_ordinary"]
 LEGACY_STEPS = {16: 100, 32: 15}          # peri/ are about 10x slower
 LEGACY_STYLES = ["peri_pmb", "peri_lps"]
 MEMORY_SIZES, MEMORY_STYLE, MEMORY_BAR = (48, 64), "pd_bond", 35.0
-BUILD_BAR = 20.0                           # family build, in steps
+BUILD_BAR = 20.0
+BUSY_CPU = 90.0      # % CPU use below which a run is flagged: it waited for a CPU                           # family build, in steps
 MPI_SIZE, MPI_RANKS, MPI_BAR = 48, 2, 0.93
 SWEEP_PASSES = 2                           # the sweep and the 2-rank runs, each
 
@@ -282,6 +283,10 @@ def print_throughput(best, passes):
     print("  pass, CPU % its CPU use (below 100: the process waited for a CPU); M bonds/s = million unique")
     print("  bonds per second per core, ns/bond = per bond per step, both from time; broken = bonds broken")
     print("  in the timed run (fix pd/bonds)")
+    busy = [s for s, r in best.items() if r["cpu"] is not None and r["cpu"] < BUSY_CPU]
+    if busy:
+        print(f"  busy machine: {len(busy)} of {len(best)} kept runs used the CPU less than {BUSY_CPU:g}% of "
+              "their wall time")
 
 
 def per_pass(num, den):
@@ -424,7 +429,11 @@ def print_mpi(rows):
         t1, cpu1 = one["wall"]
         eff = t1 / (MPI_RANKS * two["loop"])
         print(f"  {style:12s} T1 {t1:7.3f} s ({cpu1:5.1f}% CPU)  "
-              f"T{MPI_RANKS} {two['loop']:7.3f} s ({two['cpu']:5.1f}% CPU)  efficiency {100 * eff:5.1f}%   {mark(100 * eff, 100 * MPI_BAR, True, '%')}")
+              f"T{MPI_RANKS} {two['loop']:7.3f} s ({two['cpu']:5.1f}% CPU)  efficiency {100 * eff:5.1f}%   "
+              f"{mark(100 * eff, 100 * MPI_BAR, True, '%')}")
+    if any(min(one["wall"][1], two["cpu"]) < BUSY_CPU for _, one, two in rows):
+        print(f"  busy machine: a CPU use below {BUSY_CPU:g}% means the ranks waited for CPUs that others used;")
+        print("  this efficiency then measures the load more than the code: run it again on a quiet machine")
 
 
 # -------------------------------------------------------------------- main
