@@ -2,11 +2,11 @@
 """make bench: time the pd/ styles against LAMMPS's PERI styles and print
 the tables described in bench/README.md.
 
-    report.py --lmp build/lmp [--full] [--passes 2] [--logs DIR]
+    report.py --lmp build/lmp [--full] [--passes 3] [--clock cpu|wall] [--logs DIR]
 
 Default: the benchmark block (16^3, 200 steps, 1 rank), every style in
-turn in one LAMMPS process, the whole list run twice (interleaved), the
-smaller Loop time of the two kept per style. --full adds the size sweep
+turn in one LAMMPS process, the whole list run three times (interleaved),
+the smallest time of the passes kept per style. --full adds the size sweep
 (each size and style its own process), the family build, peak memory per
 bond and the 2-rank efficiency. Python standard library only.
 """
@@ -71,8 +71,8 @@ SWEEP_STYLES = ["pd_bond", "pd_ordinary"]
 LEGACY_STEPS = {16: 100, 32: 15}          # peri/ are about 10x slower
 LEGACY_STYLES = ["peri_pmb", "peri_lps"]
 MEMORY_SIZES, MEMORY_STYLE, MEMORY_BAR = (48, 64), "pd_bond", 35.0
-BUILD_BAR = 20.0
-BUSY_CPU = 90.0      # % CPU use below which a run is flagged: it waited for a CPU                           # family build, in steps
+BUILD_BAR = 20.0                           # family build, in steps
+BUSY_CPU = 90.0                            # % CPU use below which a run waited for a CPU
 MPI_SIZE, MPI_RANKS, MPI_BAR = 48, 2, 0.93
 SWEEP_PASSES = 2                           # the sweep and the 2-rank runs, each
 
