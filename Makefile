@@ -8,6 +8,7 @@ LAMMPS_SOURCE_DIR ?=
 # PORTABLE=1: the C core for any CPU of this architecture (no -march=native),
 # for binaries and plugins copied to other machines
 PORTABLE          ?= 0
+FULL              ?= 0
 
 # ccache keeps compiled LAMMPS objects outside the work tree, so a fresh clone
 # recompiles nothing that did not change.
@@ -50,8 +51,10 @@ test: build
 demo: build
 	./examples/impact-demo/run.sh $(LMP)
 
+# The benchmark block's tables (1-3 minutes); FULL=1 adds the size sweep,
+# family build, memory per bond and 2 ranks (10-20 minutes). bench/README.md
 bench: build
-	./bench/run.sh $(LMP)
+	FULL=$(FULL) ./bench/run.sh $(LMP)
 
 # Accuracy against cost: the sweeps (about 3 hours on 2 cores), the report
 # with its Pareto plots and recommendation table in build/accuracy/report.md
