@@ -23,6 +23,10 @@ CASES = {
     "pd/ordinary m 1/2 energy": ("pair_style pd/ordinary\n"
                                  "pair_coeff * * K 14.9e9 G 8.94e9 horizon 0.0015001 m 0.5 "
                                  "fail energy Gc 0.2\n"),
+    # PERI's rule: its note (each atom's next s0) in the scalar pass
+    "pd/bond legacy PERI's rule": ("pair_style pd/bond legacy\n"
+                                   "pair_coeff * * pmb K 14.9e9 horizon 0.0015001 "
+                                   "fail legacy 0.0005 0.25\n"),
     "pd/ordinary m 0 stretch": ("pair_style pd/ordinary\n"
                                 "pair_coeff * * K 14.9e9 G 8.94e9 horizon 0.0015001 m 0 "
                                 "fail stretch 0.0004\n"),
@@ -57,7 +61,7 @@ run 0
 
 
 for name, pair in CASES.items():
-    tag = name.replace(" ", "_").replace("/", "_")
+    tag = re.sub(r"[^A-Za-z0-9]+", "_", name)
     dumps, broken = [], []
     for every in (1, 60):
         out, _ = run(deck(pair, every, f"{tag}.{every}"), d, name=f"in.{tag}.{every}")

@@ -35,6 +35,7 @@ typedef pd_bond_force (*pd_force_fn)(void *mat, const pd_bond *bd, double eps);
 typedef int (*pd_breaks_now_fn)(const pd_failure *f, const pd_bond *bd, double eps,
                                 const pd_bond_force *bf);
 typedef int (*pd_breaks_after_fn)(const pd_failure *f, const pd_bond *bd, double eps);
+typedef void (*pd_law_note_fn)(const pd_failure *f, const pd_bond *bd);
 
 /* Slot idx of atom bd->i's row: its far end, types, weight and reference
  * length (intact unless 'failing'; a reference walk, not 'current', takes
@@ -74,7 +75,7 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
               double *restrict f, double fi[3], pd_bond *bd, int idx, pd_break_sums *sums,
               pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-              int weighted, int tallied, int failing, int directed)
+              pd_law_note_fn note, int weighted, int tallied, int failing, int directed)
 {
   pd_bond_load(bd, b, type, trow, x, xi, fail, idx, weighted, failing, 1);
   const double eps = strain(mat, bd);
@@ -116,25 +117,29 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
       pd_tally_virial(tally, dij, -tl * vi * vj);
     }
   }
-  if (failing && !bd->broken && breaks_after(fail, bd, eps))
-    pd_break_bond(fail, sums, bd, bf.release_i, bf.release_j, vi, vj, 0);
+  if (failing && !bd->broken) {
+    note(fail, bd);
+    if (breaks_after(fail, bd, eps))
+      pd_break_bond(fail, sums, bd, bf.release_i, bf.release_j, vi, vj, 0);
+  }
 }
 
 /* Bonds a row's first pass takes at a time (its buffers live on the stack). */
 enum { PD_CHUNK = 64 };
 
 /* The first pass over bonds k0 .. k0+m-1 of row 'row': every intact bond's
- * force on i per V_i V_j, into g (component c of bond k at c * PD_CHUNK + k),
- * with no store that another
- * bond could read, so that the compiler vectorizes it (the far ends'
- * positions gathered). Returns nonzero if some bond needs the full
- * per-bond path (broken, or breaking now by a law that can be asked
- * ahead): the caller then takes the chunk bond by bond instead. */
+ * force on i per V_i V_j into g (component c of bond k at c * PD_CHUNK + k)
+ * and, for the failure law's note, its length (at 3 * PD_CHUNK + k). No
+ * store that another bond could read, so the compiler vectorizes it (the
+ * far ends' positions gathered). Returns nonzero if a bond is broken or
+ * breaks now or after (the laws' questions have no side effects): the
+ * caller then takes the chunk bond by bond instead. */
 PD_INLINE int
 pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int trow, int ti,
                const double *restrict x, const double xi[3], int i, int row, int m,
                double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
-               pd_force_fn force, pd_breaks_now_fn breaks_now, int weighted, int failing)
+               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
+               int weighted, int failing)
 {
   int special = 0;
   for (int k = 0; k < m; k++) {
@@ -148,29 +153,32 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
     }
     const double eps = strain(mat, &bd);
     const pd_bond_force bf = force(mat, &bd, eps);
-    if (failing) special |= breaks_now(fail, &bd, eps, &bf);
+    if (failing) {
+      special |= breaks_now(fail, &bd, eps, &bf) | breaks_after(fail, &bd, eps);
+      g[3 * PD_CHUNK + k] = bd.len;
+    }
     const double tl = bd.len > 0.0 ? bf.t / bd.len : 0.0;
     for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = tl * bd.d[c];
   }
   return special;
 }
 
-/* Walks every bond once. Evaluations that tally, directed materials and
- * laws that cannot be asked ahead go bond by bond (pd_force_bond); the
- * others take each row in chunks: the vectorized first pass, then the
- * scalar sums onto i and its (distinct) far ends, in the same order and
- * with the same arithmetic as bond by bond. */
+/* Walks every bond once. Evaluations that tally and directed materials go
+ * bond by bond (pd_force_bond); the others take each row in chunks: the
+ * vectorized first pass, then the scalar sums onto i and its (distinct)
+ * far ends and the failure law's notes, in the same order and with the
+ * same arithmetic as bond by bond. */
 PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
                  const double *restrict x, const double *restrict vol, double *restrict f,
                  pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                  pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-                 int weighted, int tallied, int failing, int directed, int ahead)
+                 pd_law_note_fn note, int weighted, int tallied, int failing, int directed)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
-  const int chunked = !tallied && !directed && ahead;
+  const int chunked = !tallied && !directed;
   pd_bond bd;
-  double g[3 * PD_CHUNK];
+  double g[4 * PD_CHUNK];
   for (int i = 0; i < b->nowner; i++) {
     const int n = b->count[i];
     if (!n) continue;
@@ -186,9 +194,9 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       /* (one copy of the first pass for one atom type: no type loads) */
       if (chunked &&
           !(type ? pd_force_chunk(b, type, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, breaks_now, weighted, failing)
+                                  strain, force, breaks_now, breaks_after, weighted, failing)
                  : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, breaks_now, weighted, failing))) {
+                                  strain, force, breaks_now, breaks_after, weighted, failing))) {
         for (int k = 0; k < m; k++) {
           const int j = b->far[row + k0 + k];
           const double vj = vol[j];
@@ -196,13 +204,21 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
             fi[c] += vj * g[c * PD_CHUNK + k];
             f[3 * j + c] -= vi * g[c * PD_CHUNK + k];
           }
+          if (failing) {
+            bd.j = j;
+            bd.tj = type ? type[j] : 1;
+            bd.tij = trow + bd.tj;
+            bd.r0 = b->len0[row + k0 + k];
+            bd.len = g[3 * PD_CHUNK + k];
+            note(fail, &bd);
+          }
         }
         continue;
       }
       for (int k = 0; k < m; k++)
         pd_force_bond(b, type, trow, x, xi, vol, f, fi, &bd, row + k0 + k, &sums, tally, fail,
-                      mat, strain, force, breaks_now, breaks_after, weighted, tallied, failing,
-                      directed);
+                      mat, strain, force, breaks_now, breaks_after, note, weighted, tallied,
+                      failing, directed);
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
   }
@@ -211,11 +227,11 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
 
 PD_INLINE void
 pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn force,
-              pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after, int weighted,
-              int tallied, int failing, int directed, int ahead)
+              pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after, pd_law_note_fn note,
+              int weighted, int tallied, int failing, int directed)
 {
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->tally, L->fail, mat, strain,
-                   force, breaks_now, breaks_after, weighted, tallied, failing, directed, ahead);
+                   force, breaks_now, breaks_after, note, weighted, tallied, failing, directed);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */
@@ -225,7 +241,7 @@ typedef void (*pd_kernel)(const pd_loop *L, void *mat);
   static void prefix##_##law##_##failing##weighted##tallied(const pd_loop *L, void *mat) \
   {                                                                                       \
     pd_force_loop(L, mat, strain, force, pd_law_##law##_now, pd_law_##law##_after,        \
-                  weighted, tallied, failing, directed, pd_law_##law##_ahead);            \
+                  pd_law_##law##_note, weighted, tallied, failing, directed);             \
   }
 #define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing, directed) \
   PD_KERNEL_(prefix, strain, force, law, failing, 0, 0, directed)             \

@@ -14,10 +14,6 @@ typedef struct pd_law_energy {
   const double *gc;    /* per type pair G_c (+inf: the pair does not fail) */
 } pd_law_energy;
 
-/* The bond loop may ask _now ahead of a bond's turn, and again: _now has
- * no side effects and _after never breaks. */
-enum { pd_law_energy_ahead = 1 };
-
 static inline int pd_law_energy_now(const pd_failure *f, const pd_bond *bd, double eps,
                                     const pd_bond_force *bf)
 {
@@ -32,6 +28,11 @@ static inline int pd_law_energy_after(const pd_failure *f, const pd_bond *bd, do
 {
   (void) f, (void) bd, (void) eps;
   return 0;
+}
+
+static inline void pd_law_energy_note(const pd_failure *f, const pd_bond *bd)
+{
+  (void) f, (void) bd;
 }
 
 /* Calibration. s_c(xi) = beta omega |xi|^-2 with omega the influence

@@ -14,10 +14,6 @@ typedef struct pd_law_legacy {
                              no intact bond was seen (owned + ghost) */
 } pd_law_legacy;
 
-/* Not asked ahead of a bond's turn: _after decides, and it updates the
- * atoms' s0. */
-enum { pd_law_legacy_ahead = 0 };
-
 static inline int pd_law_legacy_now(const pd_failure *f, const pd_bond *bd, double eps,
                                     const pd_bond_force *bf)
 {
@@ -29,13 +25,20 @@ static inline int pd_law_legacy_after(const pd_failure *f, const pd_bond *bd, do
 {
   (void) eps;
   const pd_law_legacy *p = (const pd_law_legacy *) f->params;
+  const double s = (bd->len - bd->r0) / bd->r0;
+  const double lim = p->s0_atom[bd->i] < p->s0_atom[bd->j] ? p->s0_atom[bd->i] : p->s0_atom[bd->j];
+  return s > lim;
+}
+
+/* every intact bond that acted: the candidate s0 of both ends */
+static inline void pd_law_legacy_note(const pd_failure *f, const pd_bond *bd)
+{
+  const pd_law_legacy *p = (const pd_law_legacy *) f->params;
   const int tij = bd->tij;
   const double s = (bd->len - bd->r0) / bd->r0;
   const double cand = p->s00[tij] - p->alpha[tij] * s;
   if (cand > p->s0_new[bd->i]) p->s0_new[bd->i] = cand;
   if (cand > p->s0_new[bd->j]) p->s0_new[bd->j] = cand;
-  const double lim = p->s0_atom[bd->i] < p->s0_atom[bd->j] ? p->s0_atom[bd->i] : p->s0_atom[bd->j];
-  return s > lim;
 }
 
 #endif

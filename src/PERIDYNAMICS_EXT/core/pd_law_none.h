@@ -5,10 +5,6 @@
 
 #include "pd_failure.h"
 
-/* The bond loop may ask _now ahead of a bond's turn, and again: no side
- * effects, and nothing breaks after. */
-enum { pd_law_none_ahead = 1 };
-
 static inline int pd_law_none_now(const pd_failure *f, const pd_bond *bd, double eps,
                                   const pd_bond_force *bf)
 {
@@ -20,6 +16,11 @@ static inline int pd_law_none_after(const pd_failure *f, const pd_bond *bd, doub
 {
   (void) f, (void) bd, (void) eps;
   return 0;
+}
+
+static inline void pd_law_none_note(const pd_failure *f, const pd_bond *bd)
+{
+  (void) f, (void) bd;
 }
 
 #endif

@@ -9,10 +9,6 @@ typedef struct pd_law_stretch {
   const double *s0;    /* per type pair (+inf: the pair does not fail) */
 } pd_law_stretch;
 
-/* The bond loop may ask _now ahead of a bond's turn, and again: _now has
- * no side effects and _after never breaks. */
-enum { pd_law_stretch_ahead = 1 };
-
 static inline int pd_law_stretch_now(const pd_failure *f, const pd_bond *bd, double eps,
                                      const pd_bond_force *bf)
 {
@@ -25,6 +21,11 @@ static inline int pd_law_stretch_after(const pd_failure *f, const pd_bond *bd, d
 {
   (void) f, (void) bd, (void) eps;
   return 0;
+}
+
+static inline void pd_law_stretch_note(const pd_failure *f, const pd_bond *bd)
+{
+  (void) f, (void) bd;
 }
 
 /* Critical stretch from the fracture energy for bond-based elasticity

@@ -1,18 +1,19 @@
 /* The failure laws, registered here once. Each law lives in its own
- * header (pd_law_<name>.h): its parameters and the two questions the bond
- * loop asks it (pd_bond_loop.h):
+ * header (pd_law_<name>.h): its parameters, the two questions the bond
+ * loop asks it and what it notes (pd_bond_loop.h):
  *   pd_law_<name>_now   does an intact bond break in this evaluation,
  *                       before its force acts (it then acts with half)?
  *   pd_law_<name>_after does it break after its force acted?
- *   pd_law_<name>_ahead 1 if the loop may ask _now ahead of a bond's turn
- *                       and again (so it can compute a row's forces in a
- *                       vectorized pass), 0 if _after decides or has effects.
+ *   pd_law_<name>_note  what the law keeps of every intact bond that acted
+ *                       (its per-atom state; may do nothing).
+ * _now and _after only answer (no side effects): the loop asks them for a
+ * row's bonds ahead of their turn, in its vectorized pass, and again.
  * To add a law: write its header, add one line to the list below and its
  * #include to pd_law_hooks.h. */
 #ifndef PD_LAWS_H
 #define PD_LAWS_H
 
-/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after. */
+/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_note. */
 #define PD_FAILURE_LAWS(X, ...)          \
   X(NONE, none, __VA_ARGS__)             \
   X(STRETCH, stretch, __VA_ARGS__)       \
