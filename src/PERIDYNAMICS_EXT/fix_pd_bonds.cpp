@@ -23,6 +23,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <ctime>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -204,6 +205,7 @@ void FixPDBonds::post_neighbor()
 
 void FixPDBonds::build_families()
 {
+  const double wall0 = MPI_Wtime(), cpu0 = (double) std::clock() / CLOCKS_PER_SEC;
   neighbor->build_one(list);
   const int nlocal = atom->nlocal;
   const tagint *tag = atom->tag;
@@ -290,12 +292,16 @@ void FixPDBonds::build_families()
   for (int i = 0; i < nlocal; i++) mybonds += npartner[i];
   MPI_Allreduce(&mybonds, &nbonds, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   report_bonds_by_type(touching);
+  double took[2] = {MPI_Wtime() - wall0, (double) std::clock() / CLOCKS_PER_SEC - cpu0}, most[2];
+  MPI_Allreduce(took, most, 2, MPI_DOUBLE, MPI_MAX, world);
   if (comm->me == 0) {
     const double bytes = bytes_per_bond();
     utils::logmesg(lmp,
                    "pd/bonds: {} bonds, {:.2f} bonds per atom (each stored once), "
                    "up to {} owned per atom, {:.0f} bytes per bond\n",
                    nbonds, 2.0 * nbonds / MAX(atom->natoms, 1), maxpartner, bytes);
+    utils::logmesg(lmp, "pd/bonds: families built in {:.3g} s ({:.3g} s CPU, slowest rank)\n",
+                   most[0], most[1]);
     if (precut)
       utils::logmesg(lmp, "pd/bonds: {} bonds cut by the pre-cracks saved in the restart file\n", precut);
   }
