@@ -94,7 +94,8 @@ class Neighbourhood {
     const int nall = atom->nlocal + atom->nghost;
     {
       const std::vector<double> y = reference_images(atom, lmp->domain);
-      const int status = pd_cell_bins_build(&bins, y.data(), nall, reach / CELLS_PER_REACH, 2L * nall + 64);
+      const double side = reach > 0.0 ? reach / CELLS_PER_REACH : 1.0;    // (no reach: no bonds)
+      const int status = pd_cell_bins_build(&bins, y.data(), nall, side, 2L * nall + 64);
       if (status)
         lmp->error->one(FLERR, "Fix pd/bonds: cannot sort the atoms into cells to build the bond "
                         "families ({})", status == -1 ? "a reference position is not finite" : "out of memory");
