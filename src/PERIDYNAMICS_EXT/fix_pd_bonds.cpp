@@ -16,7 +16,6 @@
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
-#include "neigh_list.h"
 #include "pd_compat.h"
 #include "pd_error.h"
 #include "update.h"
@@ -33,20 +32,11 @@ using namespace FixConst;
 static constexpr int PER_ATOM_FIXED = 2;    // count, own tag (then the fields, then the bonds)
 static constexpr double MAX_INTACT_LENGTH = 11.0;    // stretch 10: no material survives it
 
-// Which end stores a bond: the smaller tag when the tags' sum is even, the
-// larger when odd. Either rule stores each bond once; alternating keeps the
-// per-atom tables (padded to the longest row) about half full rather than
-// giving the first atom of a periodic lattice every one of its bonds.
-static inline bool owns_bond(tagint me, tagint other)
-{
-  return ((me + other) & 1) ? me > other : me < other;
-}
-
 FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), serving(false), built_tag(nullptr), use_weights(0), nhistory(0), built(0),
-    maxpartner(1), nowned(0), npartner(nullptr), partner(nullptr), r0(nullptr), weight(nullptr),
+    maxpartner(1), nrows(0), nowned(0), npartner(nullptr), partner(nullptr), r0(nullptr), weight(nullptr),
     history(nullptr), far(nullptr), nlost_local(0), intact_at_map(-1), stored_total(0),
-    nlost_reported(0), family_key(0.0), record(lmp), stable_dt(0.0), list(nullptr), comm_array(nullptr),
+    nlost_reported(0), family_key(0.0), record(lmp), stable_dt(0.0), comm_array(nullptr),
     comm_width(1), comm_max(0), guard_step(INFINITY), damaged(0), damaged_example(0), idissipated(-1),
     ifamily_volume(-1), iweighted_volume(-1), fields_from_file(false)
 {
@@ -75,6 +65,7 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
   maxexchange = per_atom_max(PDField::MIGRATE);
 
   grow_arrays(atom->nmax);
+  grow_rows(atom->nlocal + 1);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nmax; i++) set_arrays(i);
@@ -120,13 +111,9 @@ void FixPDBonds::post_run()
 void FixPDBonds::init()
 {
   take_family_spec();
-  if (!serving) {
-    if (built && comm->me == 0)
-      utils::logmesg(lmp, "pd/bonds: no pd/ material pair style in this run; the bond families "
-                     "are kept unchanged until one returns\n");
-    return;
-  }
-  if (!built) PDCompat::request_occasional_full(neighbor, this, instance_me);
+  if (!serving && built && comm->me == 0)
+    utils::logmesg(lmp, "pd/bonds: no pd/ material pair style in this run; the bond families "
+                   "are kept unchanged until one returns\n");
 }
 
 // The family spec of the pair style that provides one now, alone or as a
@@ -146,11 +133,6 @@ void FixPDBonds::take_family_spec()
     error->all(FLERR, "Pair {}: the bond families were built for other pair settings (style, "
                "horizons, influence, quadrature, legacy or dimension changed after the first run); they are "
                "built once: start the simulation again with the new settings", spec.style);
-}
-
-void FixPDBonds::init_list(int, NeighList *ptr)
-{
-  list = ptr;
 }
 
 void FixPDBonds::setup_post_neighbor()
@@ -201,105 +183,6 @@ void FixPDBonds::post_neighbor()
 }
 
 /* ---------------------------------------------------------------------- */
-
-void FixPDBonds::build_families()
-{
-  neighbor->build_one(list);
-  const int nlocal = atom->nlocal;
-  const tagint *tag = atom->tag;
-  const int *type = atom->type;
-  double **x0 = atom->x0;
-
-  // a candidate becomes a bond if the family spec says so (its reference
-  // distance within the horizon, or with partial volumes a share of its
-  // cell inside it); the pair is stored once (at its owner) and with one
-  // image only (closest_image walks the image chain from its head, the
-  // mapped atom). g: the candidate's geometry, for its weight.
-  const double *vol = atom->vfrac;
-  PDBondGeometry g;
-  auto candidate = [&](int i, int j) {
-    if (!owns_bond(tag[i], tag[j]) || domain->closest_image(i, atom->map(tag[j])) != j) return false;
-    g.xi[0] = x0[j][0] - x0[i][0];
-    g.xi[1] = x0[j][1] - x0[i][1];
-    g.xi[2] = x0[j][2] - x0[i][2];
-    PDCompat::minimum_image(domain, g.xi);
-    g.r = sqrt(g.xi[0] * g.xi[0] + g.xi[1] * g.xi[1] + g.xi[2] * g.xi[2]);
-    g.vi = vol[i];
-    g.vj = vol[j];
-    g.horizon = spec.horizon(type[i], type[j]);
-    return spec.is_bond(g);
-  };
-
-  int mymax = 0;
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    int n = 0;
-    for (int jj = 0; jj < list->numneigh[i]; jj++)
-      if (candidate(i, list->firstneigh[i][jj] & NEIGHMASK)) n++;
-    mymax = MAX(mymax, n);
-  }
-  int longest;
-  MPI_Allreduce(&mymax, &longest, 1, MPI_INT, MPI_MAX, world);
-  resize_tables(MAX(longest, 1));
-
-  for (int i = 0; i < nlocal; i++) {
-    npartner[i] = 0;
-    built_tag[i] = tag[i];
-  }
-  // type pairs whose atoms come within one of the two types' horizons
-  const int nt = atom->ntypes + 1;
-  std::vector<bigint> touching(nt * nt, 0);
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = list->firstneigh[i][jj] & NEIGHMASK;
-      const int a = MIN(type[i], type[j]), b = MAX(type[i], type[j]);
-      if (a != b && !touching[a * nt + b]) {
-        double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-        PDCompat::minimum_image(domain, d);
-        const double reach = MAX(spec.horizon(a, a), spec.horizon(b, b));
-        touching[a * nt + b] = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= reach * reach;
-      }
-      if (!candidate(i, j)) continue;
-      const int k = npartner[i]++;
-      partner[i][k] = tag[j];
-      r0[i][k] = g.r;
-      if (use_weights) weight[i][k] = spec.bond_weight(g);
-      for (int h = 0; h < nhistory; h++) history[i][k * nhistory + h] = 0.0;
-    }
-  }
-  int coincident = 0, any_coincident;
-  for (int i = 0; i < nlocal; i++)
-    for (int k = 0; k < npartner[i]; k++)
-      if (r0[i][k] <= 1e-12 * spec.horizon(type[i], type[i])) coincident = 1;
-  MPI_Allreduce(&coincident, &any_coincident, 1, MPI_INT, MPI_MAX, world);
-  if (any_coincident)
-    error->all(FLERR, "Fix pd/bonds: two atoms share a reference position (x0); peridynamic "
-               "bonds need distinct positions");
-  built = 1;
-  map_partners(true);
-  reference_sums();
-  // cracks of a restart file written before the first run (their fixes
-  // need not exist any more); this run's pd/precrack fixes cut for themselves
-  bigint precut = 0;
-  for (const PendingCut &c : pending_cuts)
-    if (c.fixid.empty()) precut += cut_crossing(c.crack, c.groupbit);
-  pending_cuts.clear();
-
-  bigint nbonds = 0, mybonds = 0;
-  for (int i = 0; i < nlocal; i++) mybonds += npartner[i];
-  MPI_Allreduce(&mybonds, &nbonds, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  report_bonds_by_type(touching);
-  if (comm->me == 0) {
-    const double bytes = bytes_per_bond();
-    utils::logmesg(lmp,
-                   "pd/bonds: {} bonds, {:.2f} bonds per atom (each stored once), "
-                   "up to {} owned per atom, {:.0f} bytes per bond\n",
-                   nbonds, 2.0 * nbonds / MAX(atom->natoms, 1), maxpartner, bytes);
-    if (precut)
-      utils::logmesg(lmp, "pd/bonds: {} bonds cut by the pre-cracks saved in the restart file\n", precut);
-  }
-}
 
 // Bonds per atom of each type and between each pair of types, as built. A
 // type whose atoms have almost no bonds would run as free particles (a
@@ -508,13 +391,14 @@ double FixPDBonds::bytes_per_bond() const
   return sizeof(tagint) + sizeof(double) + sizeof(int) + (use_weights + nhistory) * sizeof(double);
 }
 
+// the bond tables (owned rows, padded to the longest) and the per-atom
+// arrays (owned and ghost atoms)
 double FixPDBonds::memory_usage()
 {
-  const double per_bond = bytes_per_bond();
   int per_atom_fields = 0;
   for (const Field &f : fields) per_atom_fields += f.decl.width;
-  return (double) atom->nmax * (maxpartner * per_bond + sizeof(int) + sizeof(tagint) +
-                                per_atom_fields * sizeof(double));
+  const double tables = (double) nrows * (maxpartner * bytes_per_bond() + 5 * sizeof(void *));
+  return tables + (double) atom->nmax * (sizeof(int) + sizeof(tagint) + per_atom_fields * sizeof(double));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -554,20 +438,37 @@ void FixPDBonds::unpack_reverse_comm(int n, int *list, double *buf)
 
 /* ---------------------------------------------------------------------- */
 
+// LAMMPS grows the per-atom arrays for owned and ghost atoms; the bond
+// tables only hold owned atoms (grow_rows).
 void FixPDBonds::grow_arrays(int nmax)
 {
   memory->grow(npartner, nmax, "pd/bonds:npartner");
-  memory->grow(partner, nmax, maxpartner, "pd/bonds:partner");
-  memory->grow(r0, nmax, maxpartner, "pd/bonds:r0");
-  memory->grow(far, nmax, maxpartner, "pd/bonds:far");
-  if (use_weights) memory->grow(weight, nmax, maxpartner, "pd/bonds:weight");
-  if (nhistory) memory->grow(history, nmax, maxpartner * nhistory, "pd/bonds:history");
   memory->grow(built_tag, nmax, "pd/bonds:built_tag");
   grow_fields(nmax);
 }
 
+// The bond tables have rows for owned atoms only: ghosts never own bonds
+// here, and the kernels walk owned rows. A row is written only where an
+// owned atom gets bonds: the build (rows 0 .. nlocal-1), an atom arriving
+// (unpack_exchange, unpack_restart: row nlocal) and copy_arrays (an atom
+// moved to another index, up to nlocal when LAMMPS sorts the atoms), each
+// of which makes sure the row exists. So an atom with bonds always has
+// its row (npartner[i] > 0 only for i < nrows); growth is geometric.
+void FixPDBonds::grow_rows(int n)
+{
+  if (n <= nrows) return;
+  if (nrows > 0) n = MAX(n, nrows + nrows / 8 + 64);
+  nrows = n;
+  memory->grow(partner, nrows, maxpartner, "pd/bonds:partner");
+  memory->grow(r0, nrows, maxpartner, "pd/bonds:r0");
+  memory->grow(far, nrows, maxpartner, "pd/bonds:far");
+  if (use_weights) memory->grow(weight, nrows, maxpartner, "pd/bonds:weight");
+  if (nhistory) memory->grow(history, nrows, maxpartner * nhistory, "pd/bonds:history");
+}
+
 void FixPDBonds::copy_arrays(int i, int j, int)
 {
+  if (npartner[i] > 0) ensure_row(j);
   npartner[j] = npartner[i];
   for (int k = 0; k < npartner[i]; k++) {
     partner[j][k] = partner[i][k];
@@ -636,6 +537,7 @@ int FixPDBonds::unpack_atom(int i, const double *buf, int flag)
     return m;
   }
   npartner[i] = (int) count;
+  if (count > 0) ensure_row(i);
   built_tag[i] = (tagint) ubuf(buf[m++]).i;
   m += unpack_fields(i, buf + m, flag);
   for (int k = 0; k < npartner[i]; k++) {
@@ -662,7 +564,8 @@ void FixPDBonds::write_data_header(FILE *fp, int)
 }
 
 // New row length of the per-atom bond tables (their contents are dropped:
-// memory->grow cannot change the row length of a 2D array in place).
+// memory->grow cannot change the row length of a 2D array in place), with
+// rows for the owned atoms.
 void FixPDBonds::resize_tables(int rowlength)
 {
   maxpartner = rowlength;
@@ -672,7 +575,31 @@ void FixPDBonds::resize_tables(int rowlength)
   memory->destroy(weight);
   memory->destroy(history);
   memory->destroy(far);
-  grow_arrays(atom->nmax);
+  nrows = 0;
+  grow_rows(atom->nlocal + 1);
+}
+
+// Shorter rows for the bond tables, keeping the first 'rowlength' slots
+// of each: rows move forward in place, then the memory is given back.
+template <typename T>
+static void shorten(Memory *memory, T **&table, int nrows, int from, int to, const char *name)
+{
+  if (!table || to >= from) return;
+  for (int i = 1; i < nrows; i++) memmove(table[0] + (size_t) i * to, table[i], to * sizeof(T));
+  memory->grow(table, nrows, to, name);
+}
+
+void FixPDBonds::shorten_rows(int rowlength)
+{
+  if (rowlength >= maxpartner) return;
+  shorten(memory, partner, nrows, maxpartner, rowlength, "pd/bonds:partner");
+  shorten(memory, r0, nrows, maxpartner, rowlength, "pd/bonds:r0");
+  shorten(memory, far, nrows, maxpartner, rowlength, "pd/bonds:far");
+  if (use_weights) shorten(memory, weight, nrows, maxpartner, rowlength, "pd/bonds:weight");
+  if (nhistory)
+    shorten(memory, history, nrows, maxpartner * nhistory, rowlength * nhistory, "pd/bonds:history");
+  maxpartner = rowlength;
+  maxexchange = per_atom_max(PDField::MIGRATE);
 }
 
 int FixPDBonds::pack_restart(int i, double *buf)

@@ -33,7 +33,6 @@ class FixPDBonds : public Fix {
   ~FixPDBonds() override;
   int setmask() override;
   void init() override;
-  void init_list(int, class NeighList *) override;
   void setup_post_neighbor() override;
   void post_neighbor() override;
   void min_post_neighbor() override { post_neighbor(); }
@@ -125,6 +124,7 @@ class FixPDBonds : public Fix {
   int nhistory;            // history values per bond (e.g. plastic stretch)
   int built;               // families exist (set once, kept by restart)
   int maxpartner;          // row length of the per-atom bond tables
+  int nrows;               // rows of the bond tables: owned atoms only (see grow_rows)
   int nowned;              // atoms whose local indices are current
   int *npartner;           // bonds owned by each atom
   tagint **partner;        // far end of each bond, as a global tag
@@ -145,7 +145,6 @@ class FixPDBonds : public Fix {
     int groupbit;
   };
   std::vector<PendingCut> pending_cuts;
-  class NeighList *list;
   double *comm_array;
   int comm_width;
   int comm_max;            // reverse comm takes the max instead of the sum
@@ -186,6 +185,9 @@ class FixPDBonds : public Fix {
   void reference_sums();
   void remove_bond(int i, int k);
   void resize_tables(int rowlength);
+  void shorten_rows(int rowlength);
+  void grow_rows(int n);
+  void ensure_row(int i) { if (i >= nrows) grow_rows(i + 1); }
   int per_atom_doubles(int i, int flag) const;
   int per_atom_max(int flag) const;
 };

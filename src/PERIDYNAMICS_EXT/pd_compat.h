@@ -53,22 +53,6 @@ namespace PDCompat {
 #endif
   }
 
-  /* A full neighbor list for a fix, built only on demand. */
-  inline void request_occasional_full(Neighbor *neighbor, class Fix *fix, int instance)
-  {
-#ifdef PDEXT_NEIGH_ADD_REQUEST
-    (void) instance;
-    neighbor->add_request(fix, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
-#else
-    int irequest = neighbor->request(fix, instance);
-    neighbor->requests[irequest]->pair = 0;
-    neighbor->requests[irequest]->fix = 1;
-    neighbor->requests[irequest]->half = 0;
-    neighbor->requests[irequest]->full = 1;
-    neighbor->requests[irequest]->occasional = 1;
-#endif
-  }
-
   /* A half list for a pair style with its own cutoff; the list reaches
    * cutoff + skin (the newer API adds the skin itself). */
   inline void request_pair_with_cutoff(Neighbor *neighbor, class Pair *pair, int instance, double cutoff)
