@@ -34,7 +34,8 @@ void PDContactCache::grow()
 void PDContactCache::settle(double skin_short)
 {
   skin = skin_short;
-  if (skin <= 0.0) return;
+  natoms = nnear = 0;
+  if (skin <= 0.0 || ncand == 0) return;
   if (maxnear < ncand) {
     maxnear = maxcand;
     memory->sfree(nearby);
