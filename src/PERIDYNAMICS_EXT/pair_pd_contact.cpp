@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
    PERIDYNAMICS_EXT: pair_style pd/contact (MS07 eq. 32-34).
-     pair_style pd/contact [friction <mu>] [legacy]
+     pair_style pd/contact [friction <mu>] [legacy] [skin <s>]
      pair_coeff I J [stiffness <c_s>] [distance <d>]
    Used next to a pd/ material style with pair_style hybrid/overlay, or
    alone with explicit stiffness. Pairs of atoms that were bond partners in
@@ -21,6 +21,7 @@
 #include "neighbor.h"
 #include "pair_pd.h"
 #include "pd_compat.h"
+#include "pd_contact_cache.h"
 #include "update.h"
 
 #include <cmath>
@@ -32,9 +33,13 @@ extern "C" {
 
 using namespace LAMMPS_NS;
 
+// default skin of the short list, in contact distances (doc/pair_pd_contact.md)
+static constexpr double SHORT_SKIN = 0.25;
+
 PairPDContact::PairPDContact(LAMMPS *lmp) :
     Pair(lmp), stiffness(nullptr), distance(nullptr), cutmax_contact(0.0), material(nullptr),
-    friction(0.0), legacy(0), dim(3), thickness(0.0), report(0), npairs(0), maxpairs(0), pairs(nullptr)
+    friction(0.0), legacy(0), dim(3), thickness(0.0), skin_short(NAN), skin_used(0.0), report(0),
+    cache(new PDContactCache(lmp)), cache_build(-1), legacy_c(nullptr), legacy_delta(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -48,8 +53,10 @@ PairPDContact::~PairPDContact()
     memory->destroy(cutsq);
     memory->destroy(stiffness);
     memory->destroy(distance);
+    memory->destroy(legacy_c);
+    memory->destroy(legacy_delta);
   }
-  memory->destroy(pairs);
+  delete cache;
 }
 
 void PairPDContact::allocate()
@@ -60,6 +67,8 @@ void PairPDContact::allocate()
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   memory->create(stiffness, n + 1, n + 1, "pair:stiffness");
   memory->create(distance, n + 1, n + 1, "pair:distance");
+  memory->create(legacy_c, n + 1, n + 1, "pair:legacy_c");
+  memory->create(legacy_delta, n + 1, n + 1, "pair:legacy_delta");
   for (int i = 0; i <= n; i++)
     for (int j = 0; j <= n; j++) {
       setflag[i][j] = 0;
@@ -71,19 +80,22 @@ void PairPDContact::settings(int narg, char **arg)
 {
   friction = 0.0;
   legacy = 0;
+  skin_short = NAN;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (strcmp(arg[iarg], "legacy") == 0) {
       legacy = 1;
       iarg--;
       continue;
     }
-    if (strcmp(arg[iarg], "friction") != 0)
-      error->all(FLERR, "Pair style pd/contact: unknown keyword '{}' (friction, legacy)", arg[iarg]);
-    if (iarg + 1 >= narg) error->all(FLERR, "Pair style pd/contact: 'friction' needs a coefficient");
-    friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    if (!(friction >= 0.0) || !std::isfinite(friction))
-      error->all(FLERR, "Pair style pd/contact: friction coefficient must be a finite number >= 0, "
-                 "got '{}'", arg[iarg + 1]);
+    if (strcmp(arg[iarg], "friction") != 0 && strcmp(arg[iarg], "skin") != 0)
+      error->all(FLERR, "Pair style pd/contact: unknown keyword '{}' (friction, legacy, skin)", arg[iarg]);
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair style pd/contact: '{}' needs a value", arg[iarg]);
+    const double v = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (!(v >= 0.0) || !std::isfinite(v))
+      error->all(FLERR, "Pair style pd/contact: {} must be a finite number >= 0, got '{}'",
+                 strcmp(arg[iarg], "skin") == 0 ? "skin" : "friction coefficient", arg[iarg + 1]);
+    if (strcmp(arg[iarg], "skin") == 0) skin_short = v;
+    else friction = v;
   }
 }
 
@@ -145,6 +157,10 @@ void PairPDContact::init_style()
   // a half list of its own, with its own short cutoff: not the horizon
   PDCompat::request_pair_with_cutoff(neighbor, this, instance_me, cutmax_contact);
   report = 1;
+  cache_build = -1;
+  // the short list's skin: by default a quarter of the contact distance; no
+  // use beyond the neighbor skin, within which LAMMPS's list is valid
+  skin_used = MIN(std::isnan(skin_short) ? SHORT_SKIN * cutmax_contact : skin_short, neighbor->skin);
 }
 
 double PairPDContact::init_one(int i, int j)
@@ -171,13 +187,23 @@ double PairPDContact::init_one(int i, int j)
 }
 
 // Keep the candidates that were not bond partners: reference distance
-// beyond the material's horizon (all of them without a material style).
+// beyond the material's horizon (all of them without a material style),
+// each with its contact distance; then the short list.
 void PairPDContact::filter_pairs()
 {
   double **x0 = atom->x0;
   const int *type = atom->type;
-  npairs = 0;
+  const double *vol = atom->vfrac;
+  cache->clear();
   bigint candidates = 0;
+  const double lc = legacy ? material->legacy_spacing() : 0.0;
+  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+  if (legacy)
+    for (int i = 1; i <= atom->ntypes; i++)
+      for (int j = 1; j <= atom->ntypes; j++) {
+        legacy_c[i][j] = material->contact_micromodulus(i, j);
+        legacy_delta[i][j] = material->horizon(i, j);
+      }
   // which reference pairs are bonds: the material's rule (with partial
   // volumes some reach past the horizon)
   const PDFamilySpec spec = material && !legacy ? material->family_spec() : PDFamilySpec();
@@ -187,9 +213,16 @@ void PairPDContact::filter_pairs()
     candidates += list->numneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
-      if (material && !legacy) {
+      if (legacy) {
+        // PERI: every neighbour pair, bonded or not, at min(0.9 |xi|, 1.35 lc)
+        double d0[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+        if (periodic) PDCompat::minimum_image(domain, d0);
+        cache->add(i, j, MIN(0.9 * sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), 1.35 * lc));
+        continue;
+      }
+      if (material) {
         double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-        PDCompat::minimum_image(domain, d);
+        if (periodic) PDCompat::minimum_image(domain, d);
         const double reach = spec.reach(type[i], type[j]), d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         if (d2 <= reach * reach) {
           if (!spec.fraction) continue;    // point quadrature: every pair within the horizon
@@ -201,26 +234,27 @@ void PairPDContact::filter_pairs()
           if (spec.is_bond(g)) continue;
         }
       }
-      if (npairs == maxpairs) {
-        maxpairs = 2 * maxpairs + 1024;
-        memory->grow(pairs, 2 * maxpairs, "pair:pairs");
-      }
-      pairs[2 * npairs] = i;
-      pairs[2 * npairs + 1] = j;
-      npairs++;
+      const int ti = type[i], tj = type[j];
+      cache->add(i, j, std::isnan(distance[ti][tj])
+                 ? pd_contact_radius(dim, vol[i], thickness) + pd_contact_radius(dim, vol[j], thickness)
+                 : distance[ti][tj]);
     }
   }
+  cache->settle(skin_used);
   if (report) {
     report = 0;
     report_stable_dt();
-    bigint mine[2] = {candidates, npairs}, all[2];
-    MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+    bigint mine[3] = {candidates, cache->ncandidates(), cache->npairs()}, all[3];
+    MPI_Allreduce(mine, all, 3, MPI_LMP_BIGINT, MPI_SUM, world);
+    const double per_atom = 2.0 / MAX(atom->natoms, 1);
     if (comm->me == 0)
       utils::logmesg(lmp, "pd/contact: list cutoff {:.6g} (contact distance {:.6g} + skin): {:.2f} "
-                     "neighbours per atom, {:.2f} of them candidates for contact{}\n",
-                     cutmax_contact + neighbor->skin, cutmax_contact, 2.0 * all[0] / MAX(atom->natoms, 1),
-                     2.0 * all[1] / MAX(atom->natoms, 1),
-                     legacy ? " (legacy: all pairs)" : " (never bond partners)");
+                     "neighbours per atom, {:.2f} of them candidates for contact{}; {}\n",
+                     cutmax_contact + neighbor->skin, cutmax_contact, per_atom * all[0], per_atom * all[1],
+                     legacy ? " (legacy: all pairs)" : " (never bond partners)",
+                     skin_used > 0.0 ? fmt::format("short list (skin {:.6g}): {:.2f} neighbours per atom",
+                                                   skin_used, per_atom * all[2])
+                                     : std::string("no short list (skin 0)"));
     if (comm->me == 0 && !legacy) {
       std::string line = "pd/contact: stiffness c_s";
       for (int i = 1; i <= atom->ntypes; i++)
@@ -266,39 +300,51 @@ void PairPDContact::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (vflag_atom) error->all(FLERR, "Pair pd/contact computes no per-atom virial");
-  if (neighbor->ago == 0) filter_pairs();
+  if (neighbor->ago == 0 || neighbor->ncalls != cache_build) {
+    filter_pairs();
+    cache_build = neighbor->ncalls;
+  } else
+    cache->refresh();
   double **x = atom->x, **f = atom->f, **v = atom->v;
   const double *vol = atom->vfrac;
   const int *type = atom->type;
   pd_tally t = {};
   t.eatom = eflag_atom ? eatom : nullptr;
   pd_tally *tp = evflag ? &t : nullptr;
-  double **x0 = atom->x0;
-  const double lc = legacy ? material->legacy_spacing() : 0.0;
-  for (int p = 0; p < npairs; p++) {
-    const int i = pairs[2 * p], j = pairs[2 * p + 1];
-    const int ti = type[i], tj = type[j];
-    const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-    if (legacy) {
-      // PERI: every neighbour pair, bonded or not, at min(0.9 |xi|, 1.35 lc)
-      double d0[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-      PDCompat::minimum_image(domain, d0);
-      const double dist = MIN(0.9 * sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]), 1.35 * lc);
-      pd_contact_legacy_pair(material->contact_micromodulus(ti, tj), material->horizon(ti, tj), dist,
-                             vol[i], vol[j], d, f[i], f[j], tp, i, j);
-      continue;
+  const pd_contact_cand *pairs = cache->pairs();
+  const int npairs = cache->npairs();
+  // most pairs of the list are not in contact: the coefficients are
+  // looked up for those that are
+  if (legacy) {
+    // PERI: every neighbour pair, bonded or not
+    for (int p = 0; p < npairs; p++) {
+      const int i = pairs[p].i, j = pairs[p].j;
+      const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] >= pairs[p].dist * pairs[p].dist) continue;
+      const int ti = type[i], tj = type[j];
+      pd_contact_legacy_pair(legacy_c[ti][tj], legacy_delta[ti][tj], pairs[p].dist, vol[i], vol[j], d, f[i],
+                             f[j], tp, i, j);
     }
-    const double dist = std::isnan(distance[ti][tj])
-        ? pd_contact_radius(dim, vol[i], thickness) + pd_contact_radius(dim, vol[j], thickness)
-        : distance[ti][tj];
-    const double dv[3] = {v[j][0] - v[i][0], v[j][1] - v[i][1], v[j][2] - v[i][2]};
-    pd_contact_pair(stiffness[ti][tj], dist, friction, vol[i], vol[j], d, dv, f[i], f[j], tp, i, j);
+  } else {
+    for (int p = 0; p < npairs; p++) {
+      const int i = pairs[p].i, j = pairs[p].j;
+      const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] >= pairs[p].dist * pairs[p].dist) continue;
+      const double dv[3] = {v[j][0] - v[i][0], v[j][1] - v[i][1], v[j][2] - v[i][2]};
+      pd_contact_pair(stiffness[type[i]][type[j]], pairs[p].dist, friction, vol[i], vol[j], d, dv, f[i], f[j],
+                      tp, i, j);
+    }
   }
   if (evflag) {
     if (eflag_global) eng_vdwl += t.energy;
     if (vflag_global)
       for (int k = 0; k < 6; k++) virial[k] += t.virial[k];
   }
+}
+
+double PairPDContact::memory_usage()
+{
+  return Pair::memory_usage() + cache->memory_usage();
 }
 
 void PairPDContact::write_restart(FILE *fp)

@@ -29,6 +29,7 @@ class PairPDContact : public Pair {
   void read_restart(FILE *) override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
+  double memory_usage() override;
 
  protected:
   double **stiffness;     // c_s per type pair; NaN: 15 c of the material (MS07)
@@ -39,11 +40,16 @@ class PairPDContact : public Pair {
   int legacy;             // reproduce peri/pmb's and peri/lps's contact
   int dim;
   double thickness;
+  double skin_short;      // skin of the short list (NaN: default; 0: none)
+  double skin_used;       // the one of this run
   int report;             // log the list's size at the next build
-  // contact candidates of this neighbor list: pairs that were never bond
-  // partners (those are the material's business), rebuilt on reneighboring
-  int npairs, maxpairs;
-  int *pairs;             // i, j interleaved
+  // contact candidates of this neighbor list (pairs that were never bond
+  // partners, those are the material's business) with their contact
+  // distances, taken at reneighboring, and the short list of those that
+  // can touch before it is taken again
+  class PDContactCache *cache;
+  bigint cache_build;     // the neighbor build the candidates were taken from
+  double **legacy_c, **legacy_delta;    // legacy: the material's c and horizon per type pair
 
   void allocate();
   void filter_pairs();
