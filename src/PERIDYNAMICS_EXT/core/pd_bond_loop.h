@@ -17,8 +17,9 @@
  * Speed: a row (one atom's bonds) goes in two passes, a vectorizable one
  * that computes every bond's force (gathering the far ends' positions)
  * and a scalar one that adds them onto the far ends. Rows with a broken
- * or breaking bond go bond by bond. Both ways do the same arithmetic in
- * the same order, so the results are the same to the bit. */
+ * or breaking bond, steps that tally and directed materials go bond by
+ * bond. Both ways do the same arithmetic in the same order, so the
+ * results are the same to the bit (lammps.kernels). */
 #ifndef PD_BOND_LOOP_H
 #define PD_BOND_LOOP_H
 
