@@ -71,12 +71,14 @@ bool lattice_upright(Lattice *l)
 std::string PairPD::site_lattice(double volume, pd_lattice &lat) const
 {
   Lattice *l = domain->lattice;
-  const bool upright = l && lattice_upright(l);
   int kind = -1;
-  if (upright && dim() == 3 && l->style == Lattice::SC) kind = PD_LATTICE_SC;
-  if (upright && dim() == 3 && l->style == Lattice::FCC) kind = PD_LATTICE_FCC;
-  if (upright && dim() == 2 && l->style == Lattice::SQ) kind = PD_LATTICE_SQ;
-  if (upright && dim() == 2 && l->style == Lattice::HEX) kind = PD_LATTICE_HEX;
+  if (l && dim() == 3 && l->style == Lattice::SC) kind = PD_LATTICE_SC;
+  if (l && dim() == 3 && l->style == Lattice::FCC) kind = PD_LATTICE_FCC;
+  if (l && dim() == 2 && l->style == Lattice::SQ) kind = PD_LATTICE_SQ;
+  if (l && dim() == 2 && l->style == Lattice::HEX) kind = PD_LATTICE_HEX;
+  // (only a lattice of one of these styles has its orientation set: the
+  // default 'none' leaves it uninitialized)
+  if (kind >= 0 && !lattice_upright(l)) kind = -1;
   const double site = dim() == 3 ? volume : volume / thickness;
   if (kind >= 0 && pd_lattice_make((pd_lattice_kind) kind, l->xlattice, &lat) == 0 &&
       fabs(lat.volume / site - 1.0) < 1e-3)
