@@ -176,8 +176,10 @@ void PairPDOrdinary::compute(int eflag, int vflag)
   Evaluation e;
   begin_evaluation(e);
   const pd_bond_view &v = e.view;
+  // the bonds' strains, for owned rows only (a tenth more, so that atoms
+  // migrating in rarely make it grow again)
   if (order != 0.5 && (bigint) v.nowner * v.stride > nstrain) {
-    nstrain = (bigint) atom->nmax * v.stride;
+    nstrain = (bigint) (v.nowner + v.nowner / 10 + 1) * v.stride;
     memory->destroy(strain);
     memory->create(strain, nstrain, "pair:strain");
   }
