@@ -128,6 +128,21 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
 /* Bonds a row's first pass takes at a time (its buffers live on the stack). */
 enum { PD_CHUNK = 64 };
 
+/* A first pass's load: pd_bond_load with the current separation, a broken
+ * bond (possible only when 'failing') not decoded but flagged (returns 1;
+ * its length made positive so that the pass stays finite): the caller then
+ * takes the chunk bond by bond. */
+PD_INLINE int
+pd_bond_load_ahead(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict type, int trow,
+                   const double *restrict x, const double xi[3], int idx, int weighted, int failing)
+{
+  pd_bond_load(bd, b, type, trow, x, xi, NULL, idx, weighted, 0, 1);
+  if (!failing) return 0;
+  const int broken = bd->r0 < 0.0;
+  bd->r0 = fabs(bd->r0);
+  return broken;
+}
+
 /* The first pass over bonds k0 .. k0+m-1 of row 'row': every intact bond's
  * force on i per V_i V_j into g (component c of bond k at c * PD_CHUNK + k)
  * and, for the failure law's note, its length (at 3 * PD_CHUNK + k). No
@@ -147,11 +162,7 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
     pd_bond bd;
     bd.i = i;
     bd.ti = ti;
-    pd_bond_load(&bd, b, type, trow, x, xi, NULL, row + k, weighted, 0, 1);
-    if (failing) {
-      special |= bd.r0 < 0.0;
-      bd.r0 = fabs(bd.r0);
-    }
+    special |= pd_bond_load_ahead(&bd, b, type, trow, x, xi, row + k, weighted, failing);
     const double eps = strain(mat, &bd);
     const pd_bond_force bf = force(mat, &bd, eps);
     if (failing) {
@@ -345,11 +356,7 @@ pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int
     pd_bond bd;
     bd.i = i;
     bd.ti = 0;
-    pd_bond_load(&bd, b, NULL, 0, L->x, xi, NULL, row + k, b->weight != NULL, 0, 1);
-    if (failing) {
-      broken |= bd.r0 < 0.0;
-      bd.r0 = fabs(bd.r0);
-    }
+    broken |= pd_bond_load_ahead(&bd, b, NULL, 0, L->x, xi, row + k, b->weight != NULL, failing);
     value(mat, &bd, strain(mat, &bd), tb + k * width);
   }
   return broken;
