@@ -1,0 +1,60 @@
+/* The stable time step of the current state (fix pd/timestep), for every
+ * material: each particle's bound on its current stiffness.
+ *
+ * A central bond force t(|Y|) along Y couples its two ends through the 3x3
+ * block K_ij = t' e(x)e + (t/|Y|) (I - e(x)e), whose spectral norm is
+ * |C| = max(|t'|, |t|/|Y|): the axial tangent and the string (geometric)
+ * stiffness. Block Gershgorin on M^-1 K (each atom's diagonal block is the
+ * sum of its bonds' blocks, so it adds as much again) bounds every
+ * eigenvalue: |lambda| <= max_i (2/rho_i) sum_j V_j |C_ij|. The central
+ * difference scheme is stable for dt <= 2/sqrt(lambda_max), hence
+ *   dt_i = sqrt(2 rho_i / sum_j V_j |C_ij|),
+ * MS07 eq. 43 with the bond's current tangent in place of its reference
+ * micromodulus (both agree in the reference state of a bond-based solid).
+ * A state-based bond also couples through its ends' dilatation; its bound
+ * (k_i + k_j) w g^2 generalizes the reference one of pd_ordinary_stiffness
+ * with the strain's current rate g = d eps/d|Y| (Cauchy-Schwarz bounds the
+ * dilatation coupling by it, as in the reference state).
+ * unittest/core/test_tangent.c checks the bounds against the largest
+ * eigenvalue of the assembled stiffness matrix. */
+#ifndef PD_TANGENT_H
+#define PD_TANGENT_H
+
+#include "pd_bonds.h"
+#include "pd_loop.h"
+
+/* |C| of one bond in the current configuration (bd->len, bd->r0 set). */
+typedef double (*pd_tangent_fn)(const void *ctx, const pd_bond *bd);
+
+/* sum[i] += |C| V_j and sum[j] += |C| V_i over the bonds that act now
+ * (intact ones, and broken ones while they push: pd_bond_inactive). The
+ * caller zeroes sum over owned and ghost atoms and adds the ghosts' share
+ * onto their owners. L->f and L->tally are not used. */
+void pd_tangent_sums(const pd_loop *L, const void *ctx, pd_tangent_fn tangent, double *sum);
+
+/* Bond-based (pd_pmb, MS07 eq. 14): t = c w s; ctx is a pd_pmb_tangent. */
+typedef struct pd_pmb_tangent {
+  const double *c;        /* micromodulus per type pair (pd_pmb.c) */
+  const double *plastic;  /* per-bond plastic stretch (microplastic), or NULL */
+} pd_pmb_tangent;
+double pd_pmb_bond_tangent(const void *ctx, const pd_bond *bd);
+
+/* State-based (pd_ordinary.h; pd/corr as its ordinary counterpart):
+ * axial (k_i + k_j) w g^2 + |A_i + A_j + (B_i + B_j) eps| w |dg/d|Y||,
+ * string |t| / |Y| with t = (A_i + A_j + (B_i + B_j) eps) w g. k per atom
+ * (owned + ghost) is the reference coefficient of pd_ordinary_stiffness;
+ * ab (A, B per atom as pd_ordinary_state.ab) may be NULL: no stress terms. */
+typedef struct pd_state_tangent {
+  double order;       /* Seth-Hill order m of the bond strain */
+  const double *k;
+  const double *ab;
+} pd_state_tangent;
+double pd_state_bond_tangent(const void *ctx, const pd_bond *bd);
+
+/* Contact spring (pd_contact.h) of stiffness cs at distance dist, its
+ * particles len apart: max(cs/dist, cs (dist - len)/(dist len)), per unit
+ * V_i V_j; 0 beyond dist + reach (reach: how much closer the pair may come
+ * before the next estimate). */
+double pd_contact_tangent(double cs, double dist, double len, double reach);
+
+#endif
