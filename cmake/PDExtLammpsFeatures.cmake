@@ -5,7 +5,8 @@ set(PDEXT_FEATURE_TESTS
   "comm.h"     "forward_comm_fix"               PDEXT_COMM_FIX_NAMED
   "neighbor.h" "add_request\\("                 PDEXT_NEIGH_ADD_REQUEST
   "domain.h"   "minimum_image\\(const (std::string ?&|char ?\\*)" PDEXT_MINIMUM_IMAGE_FLERR
-  "modify.h"   "get_fix_by_id"                  PDEXT_GET_FIX_BY_ID)
+  "modify.h"   "get_fix_by_id"                  PDEXT_GET_FIX_BY_ID
+  "output.h"   "reset_dt\\("                     PDEXT_OUTPUT_RESET_DT)
 
 function(pdext_lammps_features lammps_src out_var)
   set(found "")

@@ -12,6 +12,7 @@
 #include "compute_pd_fracture.h"
 #include "fix_pd_bonds.h"
 #include "fix_pd_precrack.h"
+#include "fix_pd_timestep.h"
 #include "pair_pd_bond.h"
 #include "pair_pd_contact.h"
 #include "pair_pd_ordinary.h"
@@ -43,6 +44,7 @@ const Style styles[] = {
     {"pair", "pd/contact", "short-range peridynamic contact", &pair_creator<PairPDContact>, nullptr},
     {"fix", "pd/bonds", "peridynamic bond families", nullptr, &styled_creator<FixPDBonds>},
     {"fix", "pd/precrack", "peridynamic pre-cracks", nullptr, &styled_creator<FixPDPrecrack>},
+    {"fix", "pd/timestep", "adaptive stable time step", nullptr, &styled_creator<FixPDTimestep>},
     {"compute", "pd/atom", "peridynamic per-atom fields", nullptr, &styled_creator<ComputePDAtom>},
     {"compute", "pd/damage", "peridynamic damage", nullptr, &styled_creator<ComputePDDamage>},
     {"compute", "pd/fracture", "dissipated fracture energy", nullptr, &styled_creator<ComputePDFracture>},

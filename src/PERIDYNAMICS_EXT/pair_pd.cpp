@@ -741,18 +741,24 @@ bool PairPD::failing() const
 pd_failure PairPD::failure_state()
 {
   zero_released();
-  pd_failure f = {};
-  f.law = law->id;
-  f.recontact = !law->no_recontact() && recontact != RECONTACT_NONE;
-  f.contact_radius = f.recontact && recontact == RECONTACT_NEAR ? contact_radii() : nullptr;
+  pd_failure f = recontact_state();
   f.params = law->evaluation();
-  f.len0 = bonds->len0_data();
   f.released_atom = released;
   f.fresh = fresh;
   f.maxfresh = maxfresh;
   // a second evaluation of the step in which bonds last broke: they act
   // with half their force again, as the first time (see pd_ordinary.c)
   f.replay = law->replays_fresh() && bonds->fracture().unbreak_fresh(bonds->table(), update->ntimestep);
+  return f;
+}
+
+pd_failure PairPD::recontact_state()
+{
+  pd_failure f = {};
+  f.law = law->id;
+  f.recontact = !law->no_recontact() && recontact != RECONTACT_NONE;
+  f.contact_radius = f.recontact && recontact == RECONTACT_NEAR ? contact_radii() : nullptr;
+  f.len0 = bonds->len0_data();
   return f;
 }
 
@@ -770,6 +776,17 @@ void PairPD::begin_evaluation(Evaluation &e)
   const int *type = atom->ntypes == 1 ? nullptr : atom->type;
   e.L = {&e.view, type, atom->ntypes + 1, atom->x[0], atom->vfrac, atom->f[0],
          evflag ? &e.tally : nullptr, e.fails ? &e.fail : nullptr};
+}
+
+void PairPD::begin_pass(Evaluation &e)
+{
+  e.view = bonds->view();
+  e.tally = pd_tally{};
+  e.fails = bonds->fracture().has_broken();
+  e.fail = e.fails ? recontact_state() : pd_failure{};
+  const int *type = atom->ntypes == 1 ? nullptr : atom->type;
+  e.L = {&e.view, type, atom->ntypes + 1, atom->x[0], atom->vfrac, nullptr, nullptr,
+         e.fails ? &e.fail : nullptr};
 }
 
 bool PairPD::end_evaluation(Evaluation &e)
@@ -932,6 +949,32 @@ void PairPD::tally(const pd_tally &t)
   if (eflag_global) eng_vdwl += t.energy;
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += t.virial[k];
+}
+
+double *PairPD::scratch()
+{
+  grow_work();
+  return work + nwork;
+}
+
+void PairPD::sum_to_owners(double *a)
+{
+  bonds->sum_to_owners(a);
+}
+
+void PairPD::note_stable_dt(double dt)
+{
+  bonds->note_stable_dt(dt);
+}
+
+void PairPD::stiffness_sums(double *current, double *reference)
+{
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) current[i] = reference[i] = 0.0;
+  stable_dt_sum(reference);
+  tangent_sum(current);
+  bonds->sum_to_owners(reference);
+  bonds->sum_to_owners(current);
 }
 
 // Horizon and stable time step (MS07 eq. 43), once per run, in the log.

@@ -78,6 +78,7 @@ class PairPD : public Pair, public PDFamilySource {
   static PairPD *active(class Force *);
   double legacy_spacing() const { return legacy ? lattice_spacing : 0.0; }
   double plate_thickness() const { return thickness; }
+  int dimension() const { return dim(); }    // of the model: 2 or 3
   // 'quadrature partial': each bond weighted by the share of its partner's
   // cell inside the horizon (core/pd_quadrature.h)
   bool partial_volumes() const { return quadrature == QUADRATURE_PARTIAL; }
@@ -86,6 +87,15 @@ class PairPD : public Pair, public PDFamilySource {
   virtual int default_quadrature() const { return QUADRATURE_POINT; }
   // the stable time step estimate of this run's setup (0 before it)
   double stable_dt() const { return dt_estimate; }
+  // Each owned atom's stiffness sum with its ghosts' share added (fix
+  // pd/timestep; core/pd_tangent.h): 'current' from the bonds' tangents in
+  // the current configuration, 'reference' the setup estimate's (MS07 eq.
+  // 43). Arrays of atom->nmax.
+  void stiffness_sums(double *current, double *reference);
+  // the ghosts' share of a per-atom sum (owned + ghost) onto their owners
+  void sum_to_owners(double *a);
+  // the stable step the bond store's blow-up guard quotes
+  void note_stable_dt(double dt);
   double smallest_horizon() const;
   // micromodulus of a bond-based solid as stiff as this material: the scale
   // of the contact stiffness (pd/contact)
@@ -149,6 +159,8 @@ class PairPD : public Pair, public PDFamilySource {
   virtual std::string family_settings() const { return ""; }         // what else shapes the bonds
   virtual void setup_run() {}                                   // first compute of a run
   virtual void stable_dt_sum(double *sum) = 0;    // add stiffness sums over nall
+  virtual void tangent_sum(double *sum) = 0;      // the same, current tangents (pd_tangent.h)
+  double *scratch();                              // per-atom scratch (nmax), second half of work
   virtual void report_extra() {}
   // The linear model the style's constants reduce to at small strain on a
   // lattice, and type t's elastic constants: the setup report's lattice
@@ -216,10 +228,14 @@ class PairPD : public Pair, public PDFamilySource {
     Evaluation &operator=(const Evaluation &) = delete;
   };
   void begin_evaluation(Evaluation &e);
+  // the same for a pass that computes no force (pd_tangent_sums): the
+  // bonds, and which broken bonds push
+  void begin_pass(Evaluation &e);
   bool end_evaluation(Evaluation &e);
   void report_cost(const pd_bond_view &v, double seconds);
   bool failing() const;
   pd_failure failure_state();
+  pd_failure recontact_state();    // its part that says which broken bonds push
   bool account_failure(const pd_failure &f);
   double *zero_released();
   void book_released();

@@ -17,6 +17,7 @@
 extern "C" {
 #include "pd_bond_based.h"
 #include "pd_params.h"
+#include "pd_tangent.h"
 #include "pd_timestep.h"
 }
 
@@ -130,6 +131,14 @@ void PairPDBond::stable_dt_sum(double *sum)
   const pd_bond_view v = bonds->view();
   const pd_pmb mat = {coef[PD_BOND_C][0]};
   pd_pmb_stiffness(&v, &mat, atom->type, atom->ntypes + 1, atom->vfrac, sum);
+}
+
+void PairPDBond::tangent_sum(double *sum)
+{
+  Evaluation e;
+  begin_pass(e);
+  const pd_pmb_tangent ctx = {coef[PD_BOND_C][0], plastic ? bonds->history_data() : nullptr};
+  pd_tangent_sums(&e.L, &ctx, pd_pmb_bond_tangent, sum);
 }
 
 void PairPDBond::restart_settings(PDSettingsIO &io)

@@ -29,6 +29,7 @@
 
 extern "C" {
 #include "pd_contact.h"
+#include "pd_tangent.h"
 }
 
 using namespace LAMMPS_NS;
@@ -294,6 +295,25 @@ void PairPDContact::report_stable_dt()
   if (update->dt > dt)
     error->warning(FLERR, "Pair pd/contact: timestep {} exceeds the contact springs' stable "
                    "estimate {}", update->dt, dt);
+}
+
+// The spring constant of a pair as pd_contact_pair's c_s: PERI's force
+// 15 c V_j (r - d) / delta is c_s (r/d - 1) with c_s = 15 c d / delta.
+void PairPDContact::tangent_sum(double *sum, double reach) const
+{
+  double **x = atom->x;
+  const double *vol = atom->vfrac;
+  const int *type = atom->type;
+  const pd_contact_cand *pairs = cache->candidates();
+  for (int p = 0; p < cache->ncandidates(); p++) {
+    const int i = pairs[p].i, j = pairs[p].j, ti = type[i], tj = type[j];
+    const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+    const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), dist = pairs[p].dist;
+    const double cs = legacy ? 15.0 * legacy_c[ti][tj] * dist / legacy_delta[ti][tj] : stiffness[ti][tj];
+    const double c = pd_contact_tangent(cs, dist, len, reach);
+    sum[i] += c * vol[j];
+    sum[j] += c * vol[i];
+  }
 }
 
 void PairPDContact::compute(int eflag, int vflag)

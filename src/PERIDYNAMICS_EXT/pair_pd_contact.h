@@ -30,6 +30,11 @@ class PairPDContact : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
+  // Each atom's contact spring stiffness sum (core/pd_tangent.h), owned and
+  // ghost, over the candidates closer than their contact distance plus
+  // 'reach' (how much closer a pair may come before the next estimate):
+  // fix pd/timestep. The caller adds the ghosts' share onto their owners.
+  void tangent_sum(double *sum, double reach) const;
 
  protected:
   double **stiffness;     // c_s per type pair; NaN: 15 c of the material (MS07)

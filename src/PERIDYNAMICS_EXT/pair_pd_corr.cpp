@@ -29,6 +29,7 @@ extern "C" {
 #include "pd_influence.h"
 #include "pd_ordinary.h"
 #include "pd_params.h"
+#include "pd_tangent.h"
 }
 
 using namespace LAMMPS_NS;
@@ -412,12 +413,12 @@ void PairPDCorr::compute(int eflag, int vflag)
 }
 
 // As the ordinary solid of the same moduli (pd_ordinary_stiffness): an
-// estimate of the bond stiffness, N (2 mu_bar + d |lambda_bar|) per atom.
-void PairPDCorr::stable_dt_sum(double *sum)
+// estimate of the bond stiffness, N (2 mu_bar + d |lambda_bar|) per atom
+// (owned + ghost), in the pair's scratch.
+double *PairPDCorr::stiffness_coefficients()
 {
-  const int nlocal = atom->nlocal;
-  double *k = field("corr_tensor");    // scratch: stiffness coefficient per atom
-  for (int i = 0; i < nlocal; i++) {
+  double *k = scratch();
+  for (int i = 0; i < atom->nlocal; i++) {
     const int ti = atom->type[i];
     pd_elastic m;
     pd_elastic_from_K_G(value(PD_CORR_K, ti, ti), value(PD_CORR_G, ti, ti), &m);
@@ -426,8 +427,24 @@ void PairPDCorr::stable_dt_sum(double *sum)
     k[i] = wv > 0.0 ? dim() / wv * (2.0 * l.mu + dim() * fabs(l.lambda)) : 0.0;
   }
   bonds->copy_to_ghosts(k);
+  return k;
+}
+
+void PairPDCorr::stable_dt_sum(double *sum)
+{
+  const double *k = stiffness_coefficients();
   const pd_bond_view v = bonds->view();
   pd_ordinary_stiffness(&v, k, atom->vfrac, sum);
+}
+
+// The same scaled by the current rate of the bond strain (no stress
+// terms: the correspondence stress is a tensor, not a bond's)
+void PairPDCorr::tangent_sum(double *sum)
+{
+  const pd_state_tangent ctx = {order, stiffness_coefficients(), nullptr};
+  Evaluation e;
+  begin_pass(e);
+  pd_tangent_sums(&e.L, &ctx, pd_state_bond_tangent, sum);
 }
 
 void PairPDCorr::report_extra()

@@ -26,6 +26,7 @@ extern "C" {
 #include "pd_influence.h"
 #include "pd_ordinary.h"
 #include "pd_params.h"
+#include "pd_tangent.h"
 #include "pd_timestep.h"
 }
 
@@ -203,17 +204,33 @@ void PairPDOrdinary::compute(int eflag, int vflag)
   end_evaluation(e);
 }
 
-void PairPDOrdinary::stable_dt_sum(double *sum)
+// Per atom (owned + ghost): the coefficient k of pd_ordinary_stiffness,
+// N (2 mu_bar + d |lambda_bar|), in the pair's scratch.
+double *PairPDOrdinary::stiffness_coefficients()
 {
-  const int nlocal = atom->nlocal;
-  double *k = state(F_AB);    // scratch: stiffness coefficient per atom
-  for (int i = 0; i < nlocal; i++) {
+  double *k = scratch();
+  for (int i = 0; i < atom->nlocal; i++) {
     const int ti = atom->type[i];
     k[i] = norm(i) * (2.0 * mu_bar[ti] + dim() * fabs(lambda_bar[ti]));
   }
   bonds->copy_to_ghosts(k);
+  return k;
+}
+
+void PairPDOrdinary::stable_dt_sum(double *sum)
+{
+  const double *k = stiffness_coefficients();
   const pd_bond_view v = bonds->view();
   pd_ordinary_stiffness(&v, k, atom->vfrac, sum);
+}
+
+// with the stress terms of the last evaluation's A and B
+void PairPDOrdinary::tangent_sum(double *sum)
+{
+  const pd_state_tangent ctx = {order, stiffness_coefficients(), state(F_AB)};
+  Evaluation e;
+  begin_pass(e);
+  pd_tangent_sums(&e.L, &ctx, pd_state_bond_tangent, sum);
 }
 
 bool PairPDOrdinary::linear_model(int t, pd_linear_kind &kind, pd_elastic &e) const

@@ -51,6 +51,8 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   int uses_weights() const override { return 1; }
   PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;
+  void tangent_sum(double *) override;
+  double *stiffness_coefficients();
   void report_extra() override;
   // every strain order m linearizes to the same solid
   bool linear_model(int t, pd_linear_kind &kind, pd_elastic &e) const override;

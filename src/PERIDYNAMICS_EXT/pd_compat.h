@@ -8,6 +8,8 @@
  *   PDEXT_MINIMUM_IMAGE_FLERR   domain->minimum_image(FLERR, dx, dy, dz) (12Jun2025 on)
  *   PDEXT_GET_FIX_BY_ID         modify->get_fix_by_id(id) (find_fix and fix[] are
  *                               deprecated, to be removed)
+ *   PDEXT_OUTPUT_RESET_DT       output->reset_dt(): dumps by simulation time follow a
+ *                               changed time step (2Aug2023 on; before, no such dumps)
  * and one access that no release offers publicly: the sub-styles of pair
  * style hybrid (PairHybrid::nstyles/styles are protected in every release
  * from 29Sep2021 on), reached through pointers to members (pair_styles).
@@ -21,10 +23,15 @@
 
 #include "comm.h"
 #include "domain.h"
+#include "fix.h"
+#include "force.h"
+#include "lammps.h"
 #include "lattice.h"
 #include "modify.h"
 #include "neigh_request.h"
 #include "neighbor.h"
+#include "output.h"
+#include "pair.h"
 
 #include <string>
 #include <vector>
@@ -85,6 +92,16 @@ namespace PDCompat {
 #else
     const int ifix = modify->find_fix(id);
     return ifix < 0 ? nullptr : modify->fix[ifix];
+#endif
+  }
+
+  /* After a change of update->dt: what depends on it, as fix dt/reset does. */
+  inline void time_step_changed(class LAMMPS *lmp)
+  {
+    if (lmp->force->pair) lmp->force->pair->reset_dt();
+    for (int i = 0; i < lmp->modify->nfix; i++) lmp->modify->fix[i]->reset_dt();
+#ifdef PDEXT_OUTPUT_RESET_DT
+    lmp->output->reset_dt();
 #endif
   }
 

@@ -45,6 +45,7 @@ class PDContactCache : protected Pointers {
   const pd_contact_cand *pairs() const { return skin > 0.0 ? nearby : cand; }
   int npairs() const { return skin > 0.0 ? nnear : ncand; }
 
+  const pd_contact_cand *candidates() const { return cand; }
   int ncandidates() const { return ncand; }
   double memory_usage() const;
 

@@ -1,0 +1,269 @@
+/* ----------------------------------------------------------------------
+   PERIDYNAMICS_EXT: fix pd/timestep. Every N steps (and when a run
+   starts) each particle's stiffness bound in the current state gives its
+   stable step (core/pd_tangent.h); the smallest over all ranks times the
+   safety factor, and the time in which no particle moves more than a
+   fraction of its spacing (the estimate holds while the arrangement
+   changes little), bound the time step, which is set as fix dt/reset sets
+   it. The step changes only when it leaves a band of width 'grow' below
+   what is allowed, so the log (one line per change) stays short.
+------------------------------------------------------------------------- */
+
+#include "fix_pd_timestep.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "pair_pd.h"
+#include "pair_pd_contact.h"
+#include "pd_compat.h"
+#include "respa.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+extern "C" {
+#include "pd_contact.h"
+#include "pd_timestep.h"
+}
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+// What limits the step: the atom whose stable step is the smallest, and why.
+struct FixPDTimestep::Limit {
+  double dt;         // the step it allows (safety factor applied)
+  double stable;     // the smallest stable step of all atoms (no safety factor)
+  tagint tag;
+  int cause;         // CAUSE_*
+  double stiffening; // its material stiffness now over the reference state's
+};
+enum { CAUSE_MATERIAL, CAUSE_COMPRESSION, CAUSE_CONTACT, CAUSE_TRAVEL };
+static const char *const CAUSES[] = {"material", "compression", "contact", "travel"};
+
+FixPDTimestep::FixPDTimestep(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), safety(0.8), travel(0.05), dtmin(0.0), dtmax(INFINITY), grow(1.1), material(nullptr),
+    contact(nullptr), estimate(0.0), nchanges(0), dt_set(0.0), current(nullptr),
+    reference(nullptr), springs(nullptr), nmax(0)
+{
+  nevery = 10;
+  for (int iarg = 3; iarg < narg; iarg += 2) {
+    const char *key = arg[iarg];
+    if (iarg + 1 >= narg) error->all(FLERR, "Fix pd/timestep: '{}' needs a value", key);
+    const char *text = arg[iarg + 1];
+    if (strcmp(key, "every") == 0) {
+      nevery = utils::inumeric(FLERR, text, false, lmp);
+      if (nevery < 1) error->all(FLERR, "Fix pd/timestep: every must be a step count >= 1, got '{}'", text);
+      continue;
+    }
+    const double v = utils::numeric(FLERR, text, false, lmp);
+    if (strcmp(key, "safety") == 0) {
+      if (!(v > 0.0 && v <= 1.0))
+        error->all(FLERR, "Fix pd/timestep: safety must be a fraction in (0, 1], got '{}'", text);
+      safety = v;
+    } else if (strcmp(key, "min") == 0 || strcmp(key, "max") == 0) {
+      if (!(v > 0.0) || !std::isfinite(v))
+        error->all(FLERR, "Fix pd/timestep: {} must be a time step > 0, got '{}'", key, text);
+      (key[1] == 'i' ? dtmin : dtmax) = v;
+    } else if (strcmp(key, "travel") == 0) {
+      if (!(v >= 0.0) || !std::isfinite(v))
+        error->all(FLERR, "Fix pd/timestep: travel must be a fraction of the spacing >= 0 (0: no "
+                   "limit), got '{}'", text);
+      travel = v;
+    } else if (strcmp(key, "grow") == 0) {
+      if (!(v > 1.0) || !std::isfinite(v))
+        error->all(FLERR, "Fix pd/timestep: grow must be a factor > 1, got '{}'", text);
+      grow = v;
+    } else
+      error->all(FLERR, "Fix pd/timestep: unknown keyword '{}' (every, safety, travel, min, max, grow)", key);
+  }
+  if (dtmin > dtmax) error->all(FLERR, "Fix pd/timestep: min {} exceeds max {}", dtmin, dtmax);
+  if (igroup != 0)
+    error->all(FLERR, "Fix pd/timestep: the stable step concerns every atom: use group all, not '{}'",
+               arg[1]);
+  scalar_flag = 1;
+  vector_flag = 1;
+  size_vector = 3;
+  global_freq = 1;
+  extscalar = 0;
+  extvector = 0;
+  restart_global = 1;
+}
+
+FixPDTimestep::~FixPDTimestep()
+{
+  memory->destroy(current);
+  memory->destroy(reference);
+  memory->destroy(springs);
+}
+
+int FixPDTimestep::setmask()
+{
+  return END_OF_STEP;
+}
+
+void FixPDTimestep::init()
+{
+  material = PairPD::active(force);
+  if (!material)
+    error->all(FLERR, "Fix pd/timestep needs a pd/ material pair style (pd/bond, pd/ordinary, pd/corr)");
+  contact = dynamic_cast<PairPDContact *>(force->pair_match("pd/contact", 0, 0));
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "Fix pd/timestep does not work with run_style respa");
+}
+
+// A run starts: its first step comes from the state it starts in, unless
+// this fix set the step itself off its schedule (a restart or a next run
+// between two checks keeps the step the uninterrupted run would have).
+void FixPDTimestep::setup(int)
+{
+  if (dt_set > 0.0 && update->dt == dt_set && update->ntimestep % nevery != 0) return;
+  check("run start");
+}
+
+void FixPDTimestep::end_of_step()
+{
+  if (update->ntimestep % nevery == 0) check("");
+}
+
+// How much closer two particles may come before the next estimate, with
+// the step at most doubled: contacts about to form count already.
+double FixPDTimestep::contact_reach() const
+{
+  double **v = atom->v;
+  double vmax = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    vmax = fmax(vmax, v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+  double all;
+  MPI_Allreduce(&vmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return 2.0 * sqrt(all) * nevery * 2.0 * update->dt;
+}
+
+FixPDTimestep::Limit FixPDTimestep::limiting_atom()
+{
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(current);
+    memory->destroy(reference);
+    memory->destroy(springs);
+    memory->create(current, nmax, "pd/timestep:current");
+    memory->create(reference, nmax, "pd/timestep:reference");
+    memory->create(springs, nmax, "pd/timestep:springs");
+  }
+  material->stiffness_sums(current, reference);
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) springs[i] = 0.0;
+  if (contact) {
+    contact->tangent_sum(springs, contact_reach());
+    material->sum_to_owners(springs);
+  }
+  // a = ftm2v f / m in every unit system (rmass is the density, f a force density)
+  struct {
+    double dt;
+    int rank;
+  } mine = {INFINITY, comm->me}, all;
+  double stable = INFINITY;
+  int imin = -1, travels = 0;
+  double **v = atom->v;
+  const int dim = material->dimension();
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double dt = pd_stable_dt(atom->rmass[i], force->ftm2v * (current[i] + springs[i]));
+    stable = fmin(stable, dt);
+    // the estimate holds while the arrangement changes little: no particle
+    // moves more than 'travel' of its spacing in one step
+    const double speed = sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+    const double reach = travel * 2.0 * pd_contact_radius(dim, atom->vfrac[i], material->plate_thickness());
+    const double dt_travel = travel > 0.0 && speed > 0.0 ? reach / speed : INFINITY;
+    const double allowed = fmin(safety * dt, dt_travel);
+    if (allowed < mine.dt) {
+      mine.dt = allowed;
+      imin = i;
+      travels = dt_travel < safety * dt;
+    }
+  }
+  MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE_INT, MPI_MINLOC, world);
+  Limit lim = {all.dt, 0.0, 0, CAUSE_MATERIAL, 1.0};
+  MPI_Allreduce(&stable, &lim.stable, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (comm->me == all.rank && imin >= 0) {
+    lim.tag = atom->tag[imin];
+    lim.stiffening = reference[imin] > 0.0 ? current[imin] / reference[imin] : 1.0;
+    lim.cause = travels                       ? CAUSE_TRAVEL
+        : springs[imin] > current[imin] ? CAUSE_CONTACT
+        : lim.stiffening > 1.05              ? CAUSE_COMPRESSION
+                                             : CAUSE_MATERIAL;
+  }
+  MPI_Bcast(&lim.tag, 1, MPI_LMP_TAGINT, all.rank, world);
+  MPI_Bcast(&lim.cause, 1, MPI_INT, all.rank, world);
+  MPI_Bcast(&lim.stiffening, 1, MPI_DOUBLE, all.rank, world);
+  return lim;
+}
+
+void FixPDTimestep::check(const char *when)
+{
+  const Limit lim = limiting_atom();
+  estimate = lim.stable;
+  if (!std::isfinite(lim.dt)) return;    // no bond, contact or motion: nothing limits the step
+  material->note_stable_dt(estimate);    // the blow-up guard quotes it
+  const double allowed = fmin(lim.dt, dtmax);
+  if (allowed < dtmin)
+    error->all(FLERR, "Fix pd/timestep: at step {} the step the state allows, {:.6g}, is below min "
+               "{:.6g} ({} at atom {}): the run would be unstable; lower min or change the scene",
+               update->ntimestep, allowed, dtmin, CAUSES[lim.cause], lim.tag);
+  // a band: the step stays while it is within [allowed / grow, allowed],
+  // else becomes allowed / grow (so a shrinking step changes once per grow)
+  const double old = update->dt;
+  if (dt_set > 0.0 && old <= allowed && old * grow >= allowed) return;
+  const double dt = fmax(fmin(lim.dt / grow, dtmax), dtmin);
+  set_dt(dt);
+  if (comm->me == 0) {
+    const std::string why = lim.cause == CAUSE_COMPRESSION
+        ? fmt::format("compression: {:.3g}x its reference stiffness", lim.stiffening)
+        : CAUSES[lim.cause];
+    utils::logmesg(lmp, "pd/timestep: step {}{}: dt {:.6g} -> {:.6g} (stable {:.6g}, limited by {} at "
+                   "atom {}{})\n", update->ntimestep, *when ? fmt::format(" ({})", when) : "", old, dt,
+                   estimate, why, lim.tag, dt == dtmax ? "; capped by max" : "");
+  }
+}
+
+void FixPDTimestep::set_dt(double dt)
+{
+  update->update_time();
+  update->dt = dt;
+  update->dt_default = 0;
+  PDCompat::time_step_changed(lmp);
+  dt_set = dt;
+  nchanges++;
+}
+
+double FixPDTimestep::compute_scalar()
+{
+  return update->dt;
+}
+
+// 1: the step, 2: the last stable estimate (before the safety factor),
+// 3: how many times the step changed
+double FixPDTimestep::compute_vector(int n)
+{
+  return n == 0 ? update->dt : n == 1 ? estimate : (double) nchanges;
+}
+
+void FixPDTimestep::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const double list[3] = {dt_set, estimate, (double) nchanges};
+  const int size = sizeof(list);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(list, sizeof(list), 1, fp);
+}
+
+void FixPDTimestep::restart(char *buf)
+{
+  double list[3];
+  memcpy(list, buf, sizeof(list));
+  dt_set = list[0];
+  estimate = list[1];
+  nchanges = (bigint) list[2];
+}

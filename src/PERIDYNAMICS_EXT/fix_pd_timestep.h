@@ -1,0 +1,57 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDYNAMICS_EXT: fix pd/timestep, the stable time step of the current
+   state, taken every N steps: each particle's bound on its current
+   stiffness (its bonds' tangents, intact and pushing broken ones, with
+   nonlinear stiffening; its contact springs), core/pd_tangent.h.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(pd/timestep,FixPDTimestep);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_PD_TIMESTEP_H
+#define LMP_FIX_PD_TIMESTEP_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixPDTimestep : public Fix {
+ public:
+  FixPDTimestep(class LAMMPS *, int, char **);
+  ~FixPDTimestep() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void end_of_step() override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+ private:
+  double safety;          // the step is this fraction of the stable one
+  double travel;          // and lets no particle move more than this fraction of its spacing
+  double dtmin, dtmax;    // bounds on the step (0, inf: none)
+  double grow;            // the step grows only when the stable one allows this factor more
+  class PairPD *material;
+  class PairPDContact *contact;
+  double estimate;        // the last stable step (before the safety factor)
+  bigint nchanges;        // changes of the step so far
+  double dt_set;          // the step this fix set last (0: none yet), restart
+  double *current, *reference, *springs;    // per-atom stiffness sums
+  int nmax;
+
+  struct Limit;
+  void check(const char *when);
+  Limit limiting_atom();
+  void set_dt(double dt);
+  double contact_reach() const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
