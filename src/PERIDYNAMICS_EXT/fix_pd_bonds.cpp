@@ -59,8 +59,8 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
   extscalar = 0;
   stores_ids = 1;
   create_attribute = 1;
-  comm_forward = 2;
-  comm_reverse = 2;
+  comm_forward = 3;    // MIN_COMM_WIDTH of fix_pd_bonds_fields.cpp
+  comm_reverse = 3;
   maxexchange_dynamic = 1;    // the exchange size follows the longest family
   maxexchange = per_atom_max(PDField::MIGRATE);
 

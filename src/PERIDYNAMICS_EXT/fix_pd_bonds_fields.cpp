@@ -27,7 +27,7 @@ using namespace LAMMPS_NS;
 
 namespace {
 enum { COPY_TO_GHOSTS, SUM_TO_OWNERS, MAX_TO_OWNERS };
-constexpr int MIN_COMM_WIDTH = 2;        // the width the array helpers always allow
+constexpr int MIN_COMM_WIDTH = 3;        // the width the array helpers always allow (velocities)
 constexpr int MAX_NAME = 256;            // a field name in a restart file, in bytes
 constexpr int MAX_FILE_FIELDS = 1000;    // fields a restart file may list
 constexpr int MAX_WIDTH = 100000;        // doubles per atom of one field

@@ -23,6 +23,7 @@
 #include "update.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
 
 extern "C" {
@@ -41,22 +42,22 @@ struct FixPDTimestep::Limit {
   int cause;         // CAUSE_*
   double stiffening; // its material stiffness now over the reference state's
 };
-enum { CAUSE_MATERIAL, CAUSE_COMPRESSION, CAUSE_CONTACT, CAUSE_TRAVEL };
-static const char *const CAUSES[] = {"material", "compression", "contact", "travel"};
+enum { CAUSE_MATERIAL, CAUSE_COMPRESSION, CAUSE_CONTACT, CAUSE_TRAVEL, CAUSE_CLOSING };
+static const char *const CAUSES[] = {"material", "compression", "contact", "travel", "closing"};
 
 FixPDTimestep::FixPDTimestep(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), safety(0.8), travel(0.05), dtmin(0.0), dtmax(INFINITY), grow(1.1), material(nullptr),
-    contact(nullptr), estimate(0.0), nchanges(0), dt_set(0.0), current(nullptr),
-    reference(nullptr), springs(nullptr), nmax(0)
+    Fix(lmp, narg, arg), every(10), safety(0.8), travel(0.05), dtmin(0.0), dtmax(INFINITY), grow(1.1), material(nullptr),
+    contact(nullptr), estimate(0.0), nchanges(0), dt_set(0.0), interval(1), next_check(-1), current(nullptr),
+    reference(nullptr), springs(nullptr), closing(nullptr), nmax(0)
 {
-  nevery = 10;
+  nevery = 1;    // LAMMPS calls end_of_step every step: the cheap check
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const char *key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "Fix pd/timestep: '{}' needs a value", key);
     const char *text = arg[iarg + 1];
     if (strcmp(key, "every") == 0) {
-      nevery = utils::inumeric(FLERR, text, false, lmp);
-      if (nevery < 1) error->all(FLERR, "Fix pd/timestep: every must be a step count >= 1, got '{}'", text);
+      every = utils::inumeric(FLERR, text, false, lmp);
+      if (every < 1) error->all(FLERR, "Fix pd/timestep: every must be a step count >= 1, got '{}'", text);
       continue;
     }
     const double v = utils::numeric(FLERR, text, false, lmp);
@@ -98,6 +99,7 @@ FixPDTimestep::~FixPDTimestep()
   memory->destroy(current);
   memory->destroy(reference);
   memory->destroy(springs);
+  memory->destroy(closing);
 }
 
 int FixPDTimestep::setmask()
@@ -120,13 +122,39 @@ void FixPDTimestep::init()
 // between two checks keeps the step the uninterrupted run would have).
 void FixPDTimestep::setup(int)
 {
-  if (dt_set > 0.0 && update->dt == dt_set && update->ntimestep % nevery != 0) return;
+  if (dt_set > 0.0 && update->dt == dt_set && update->ntimestep < next_check) return;
   check("run start");
 }
 
+// Between the checks, a cheap one: an impact or a wall can make a particle
+// travel too far in a step long before the next check sees the stiffening.
 void FixPDTimestep::end_of_step()
 {
-  if (update->ntimestep % nevery == 0) check("");
+  if (update->ntimestep >= next_check) {
+    check("");
+    return;
+  }
+  if (travel == 0.0) return;
+  double mine = INFINITY, all;
+  for (int i = 0; i < atom->nlocal; i++) mine = fmin(mine, travel_dt(i));
+  MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (all < update->dt) check("travel");
+}
+
+// The estimate holds while the arrangement changes little: the step in
+// which atom i moves 'travel' of its spacing, v dt + |a| dt^2 / 2 = travel
+// spacing (as fix dt/reset's xmax; a = ftm2v f / rho).
+double FixPDTimestep::travel_dt(int i) const
+{
+  if (travel == 0.0) return INFINITY;
+  const double *v = atom->v[i], *f = atom->f[i];
+  const double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  const double accel = force->ftm2v * sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) / atom->rmass[i];
+  const double reach =
+      travel * 2.0 * pd_contact_radius(material->dimension(), atom->vfrac[i], material->plate_thickness());
+  // the positive root of accel/2 dt^2 + speed dt - reach = 0, without cancellation
+  const double root = speed + sqrt(speed * speed + 2.0 * accel * reach);
+  return root > 0.0 ? 2.0 * reach / root : INFINITY;
 }
 
 // How much closer two particles may come before the next estimate, with
@@ -139,7 +167,7 @@ double FixPDTimestep::contact_reach() const
     vmax = fmax(vmax, v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
   double all;
   MPI_Allreduce(&vmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return 2.0 * sqrt(all) * nevery * 2.0 * update->dt;
+  return 2.0 * sqrt(all) * interval * 2.0 * update->dt;
 }
 
 FixPDTimestep::Limit FixPDTimestep::limiting_atom()
@@ -149,39 +177,43 @@ FixPDTimestep::Limit FixPDTimestep::limiting_atom()
     memory->destroy(current);
     memory->destroy(reference);
     memory->destroy(springs);
+    memory->destroy(closing);
     memory->create(current, nmax, "pd/timestep:current");
     memory->create(reference, nmax, "pd/timestep:reference");
-    memory->create(springs, nmax, "pd/timestep:springs");
+    memory->create(springs, 2 * nmax, "pd/timestep:springs");
+    memory->create(closing, nmax, "pd/timestep:closing");
   }
-  material->stiffness_sums(current, reference);
-  const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) springs[i] = 0.0;
+  material->stiffness_sums(current, reference, closing);
   if (contact) {
-    contact->tangent_sum(springs, contact_reach());
+    const int nall = atom->nlocal + atom->nghost;
+    for (int i = 0; i < nall; i++) springs[i] = 0.0;
+    double *pairs_closing = springs + nmax;    // the contact pairs' rates, then the largest of both
+    for (int i = 0; i < nall; i++) pairs_closing[i] = 0.0;
+    contact->tangent_sum(springs, pairs_closing, contact_reach());
     material->sum_to_owners(springs);
-  }
+    material->max_to_owners(pairs_closing);
+    for (int i = 0; i < atom->nlocal; i++) closing[i] = std::max(closing[i], pairs_closing[i]);
+  } else
+    for (int i = 0; i < atom->nlocal; i++) springs[i] = 0.0;
   // a = ftm2v f / m in every unit system (rmass is the density, f a force density)
   struct {
     double dt;
     int rank;
   } mine = {INFINITY, comm->me}, all;
   double stable = INFINITY;
-  int imin = -1, travels = 0;
-  double **v = atom->v;
-  const int dim = material->dimension();
+  int imin = -1, travels = 0, kinematic = CAUSE_TRAVEL;
   for (int i = 0; i < atom->nlocal; i++) {
     const double dt = pd_stable_dt(atom->rmass[i], force->ftm2v * (current[i] + springs[i]));
     stable = fmin(stable, dt);
-    // the estimate holds while the arrangement changes little: no particle
-    // moves more than 'travel' of its spacing in one step
-    const double speed = sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
-    const double reach = travel * 2.0 * pd_contact_radius(dim, atom->vfrac[i], material->plate_thickness());
-    const double dt_travel = travel > 0.0 && speed > 0.0 ? reach / speed : INFINITY;
-    const double allowed = fmin(safety * dt, dt_travel);
+    // and no bond or contact closes by more than 'travel' of its length
+    const double dt_travel = travel_dt(i);
+    const double dt_closing = travel > 0.0 && closing[i] > 0.0 ? travel / closing[i] : INFINITY;
+    const double allowed = fmin(safety * dt, fmin(dt_travel, dt_closing));
     if (allowed < mine.dt) {
       mine.dt = allowed;
       imin = i;
-      travels = dt_travel < safety * dt;
+      kinematic = dt_closing <= dt_travel ? CAUSE_CLOSING : CAUSE_TRAVEL;
+      travels = fmin(dt_travel, dt_closing) < safety * dt;
     }
   }
   MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE_INT, MPI_MINLOC, world);
@@ -190,7 +222,7 @@ FixPDTimestep::Limit FixPDTimestep::limiting_atom()
   if (comm->me == all.rank && imin >= 0) {
     lim.tag = atom->tag[imin];
     lim.stiffening = reference[imin] > 0.0 ? current[imin] / reference[imin] : 1.0;
-    lim.cause = travels                       ? CAUSE_TRAVEL
+    lim.cause = travels                       ? kinematic
         : springs[imin] > current[imin] ? CAUSE_CONTACT
         : lim.stiffening > 1.05              ? CAUSE_COMPRESSION
                                              : CAUSE_MATERIAL;
@@ -204,6 +236,11 @@ FixPDTimestep::Limit FixPDTimestep::limiting_atom()
 void FixPDTimestep::check(const char *when)
 {
   const Limit lim = limiting_atom();
+  // the next check: at once while the state stiffens fast (the stable step
+  // fell by more than 'grow' since the last one), else after twice the
+  // interval, up to 'every' steps
+  interval = estimate > 0.0 && lim.stable * grow < estimate ? 1 : std::min(2 * interval, every);
+  next_check = update->ntimestep + interval;
   estimate = lim.stable;
   if (!std::isfinite(lim.dt)) return;    // no bond, contact or motion: nothing limits the step
   material->note_stable_dt(estimate);    // the blow-up guard quotes it
@@ -253,7 +290,7 @@ double FixPDTimestep::compute_vector(int n)
 void FixPDTimestep::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double list[3] = {dt_set, estimate, (double) nchanges};
+  const double list[5] = {dt_set, estimate, (double) nchanges, (double) interval, (double) next_check};
   const int size = sizeof(list);
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(list, sizeof(list), 1, fp);
@@ -261,9 +298,11 @@ void FixPDTimestep::write_restart(FILE *fp)
 
 void FixPDTimestep::restart(char *buf)
 {
-  double list[3];
+  double list[5];
   memcpy(list, buf, sizeof(list));
   dt_set = list[0];
   estimate = list[1];
   nchanges = (bigint) list[2];
+  interval = (int) list[3];
+  next_check = (bigint) list[4];
 }

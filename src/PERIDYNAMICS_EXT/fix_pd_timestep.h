@@ -32,6 +32,7 @@ class FixPDTimestep : public Fix {
   void restart(char *) override;
 
  private:
+  int every;              // steps between estimates
   double safety;          // the step is this fraction of the stable one
   double travel;          // and lets no particle move more than this fraction of its spacing
   double dtmin, dtmax;    // bounds on the step (0, inf: none)
@@ -41,7 +42,10 @@ class FixPDTimestep : public Fix {
   double estimate;        // the last stable step (before the safety factor)
   bigint nchanges;        // changes of the step so far
   double dt_set;          // the step this fix set last (0: none yet), restart
+  int interval;           // steps from this check to the next (1 .. every)
+  bigint next_check;      // the step of the next check
   double *current, *reference, *springs;    // per-atom stiffness sums
+  double *closing;        // per atom: the largest relative closing rate of its bonds and contacts
   int nmax;
 
   struct Limit;
@@ -49,6 +53,7 @@ class FixPDTimestep : public Fix {
   Limit limiting_atom();
   void set_dt(double dt);
   double contact_reach() const;
+  double travel_dt(int i) const;
 };
 
 }    // namespace LAMMPS_NS

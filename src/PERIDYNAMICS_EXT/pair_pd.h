@@ -90,10 +90,12 @@ class PairPD : public Pair, public PDFamilySource {
   // Each owned atom's stiffness sum with its ghosts' share added (fix
   // pd/timestep; core/pd_tangent.h): 'current' from the bonds' tangents in
   // the current configuration, 'reference' the setup estimate's (MS07 eq.
-  // 43). Arrays of atom->nmax.
-  void stiffness_sums(double *current, double *reference);
+  // 43); 'closing' the largest relative closing rate of its bonds (1/time).
+  // Arrays of atom->nmax.
+  void stiffness_sums(double *current, double *reference, double *closing);
   // the ghosts' share of a per-atom sum (owned + ghost) onto their owners
   void sum_to_owners(double *a);
+  void max_to_owners(double *a);    // the same, the largest of owner and ghosts
   // the stable step the bond store's blow-up guard quotes
   void note_stable_dt(double dt);
   double smallest_horizon() const;
@@ -159,7 +161,9 @@ class PairPD : public Pair, public PDFamilySource {
   virtual std::string family_settings() const { return ""; }         // what else shapes the bonds
   virtual void setup_run() {}                                   // first compute of a run
   virtual void stable_dt_sum(double *sum) = 0;    // add stiffness sums over nall
-  virtual void tangent_sum(double *sum) = 0;      // the same, current tangents (pd_tangent.h)
+  // the same with the current tangents, and the bonds' relative closing
+  // rates (pd_tangent.h)
+  virtual void tangent_sum(double *sum, double *closing) = 0;
   double *scratch();                              // per-atom scratch (nmax), second half of work
   virtual void report_extra() {}
   // The linear model the style's constants reduce to at small strain on a

@@ -133,12 +133,12 @@ void PairPDBond::stable_dt_sum(double *sum)
   pd_pmb_stiffness(&v, &mat, atom->type, atom->ntypes + 1, atom->vfrac, sum);
 }
 
-void PairPDBond::tangent_sum(double *sum)
+void PairPDBond::tangent_sum(double *sum, double *closing)
 {
   Evaluation e;
   begin_pass(e);
   const pd_pmb_tangent ctx = {coef[PD_BOND_C][0], plastic ? bonds->history_data() : nullptr};
-  pd_tangent_sums(&e.L, &ctx, pd_pmb_bond_tangent, sum);
+  pd_tangent_sums(&e.L, atom->v[0], &ctx, pd_pmb_bond_tangent, sum, closing);
 }
 
 void PairPDBond::restart_settings(PDSettingsIO &io)

@@ -34,7 +34,7 @@ class PairPDBond : public PairPD {
   void check_coeff(int, int) override;
   int history_per_bond() const override { return plastic; }
   void stable_dt_sum(double *) override;
-  void tangent_sum(double *) override;
+  void tangent_sum(double *, double *) override;
   void restart_settings(PDSettingsIO &io) override;
   // partial cells: at equal bonds per atom, 3 spacings with partial cells
   // beat 4 without (constants 2.8% against 7.7%, 3D; doc/accuracy.md)

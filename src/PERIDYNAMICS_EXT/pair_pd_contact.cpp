@@ -24,6 +24,7 @@
 #include "pd_contact_cache.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -299,9 +300,9 @@ void PairPDContact::report_stable_dt()
 
 // The spring constant of a pair as pd_contact_pair's c_s: PERI's force
 // 15 c V_j (r - d) / delta is c_s (r/d - 1) with c_s = 15 c d / delta.
-void PairPDContact::tangent_sum(double *sum, double reach) const
+void PairPDContact::tangent_sum(double *sum, double *closing, double reach) const
 {
-  double **x = atom->x;
+  double **x = atom->x, **v = atom->v;
   const double *vol = atom->vfrac;
   const int *type = atom->type;
   const pd_contact_cand *pairs = cache->candidates();
@@ -313,6 +314,11 @@ void PairPDContact::tangent_sum(double *sum, double reach) const
     const double c = pd_contact_tangent(cs, dist, len, reach);
     sum[i] += c * vol[j];
     sum[j] += c * vol[i];
+    if (c > 0.0) {
+      const double r = pd_closing_rate(d, len, v[i], v[j]);
+      closing[i] = std::max(closing[i], r);
+      closing[j] = std::max(closing[j], r);
+    }
   }
 }
 

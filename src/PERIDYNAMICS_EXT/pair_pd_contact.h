@@ -33,8 +33,9 @@ class PairPDContact : public Pair {
   // Each atom's contact spring stiffness sum (core/pd_tangent.h), owned and
   // ghost, over the candidates closer than their contact distance plus
   // 'reach' (how much closer a pair may come before the next estimate):
-  // fix pd/timestep. The caller adds the ghosts' share onto their owners.
-  void tangent_sum(double *sum, double reach) const;
+  // fix pd/timestep; and the largest relative closing rate of those pairs
+  // (pd_closing_rate). The caller adds the ghosts' share onto their owners.
+  void tangent_sum(double *sum, double *closing, double reach) const;
 
  protected:
   double **stiffness;     // c_s per type pair; NaN: 15 c of the material (MS07)

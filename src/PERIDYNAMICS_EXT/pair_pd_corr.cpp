@@ -439,12 +439,12 @@ void PairPDCorr::stable_dt_sum(double *sum)
 
 // The same scaled by the current rate of the bond strain (no stress
 // terms: the correspondence stress is a tensor, not a bond's)
-void PairPDCorr::tangent_sum(double *sum)
+void PairPDCorr::tangent_sum(double *sum, double *closing)
 {
   const pd_state_tangent ctx = {order, stiffness_coefficients(), nullptr};
   Evaluation e;
   begin_pass(e);
-  pd_tangent_sums(&e.L, &ctx, pd_state_bond_tangent, sum);
+  pd_tangent_sums(&e.L, atom->v[0], &ctx, pd_state_bond_tangent, sum, closing);
 }
 
 void PairPDCorr::report_extra()

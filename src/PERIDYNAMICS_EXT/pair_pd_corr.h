@@ -62,7 +62,7 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   void fill_reference_vectors();
   PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;
-  void tangent_sum(double *) override;
+  void tangent_sum(double *, double *) override;
   double *stiffness_coefficients();
   void report_extra() override;
   void restart_settings(PDSettingsIO &io) override;

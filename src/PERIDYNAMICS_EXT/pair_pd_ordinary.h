@@ -51,7 +51,7 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   int uses_weights() const override { return 1; }
   PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;
-  void tangent_sum(double *) override;
+  void tangent_sum(double *, double *) override;
   double *stiffness_coefficients();
   void report_extra() override;
   // every strain order m linearizes to the same solid

@@ -276,14 +276,14 @@ static double estimate(const lattice *l, const model *m, const double *x, double
     for (int i = 0; i < n; i++) k[i] = dim / mw[i] * (2.0 * m->mu + dim * fabs(m->lambda));
     forces(l, m, x, f, ab);
     const pd_state_tangent t = {m->order, k, ab};
-    pd_tangent_sums(&L, &t, pd_state_bond_tangent, sum);
+    pd_tangent_sums(&L, NULL, &t, pd_state_bond_tangent, sum, NULL);
     free(mw);
     free(k);
     free(ab);
     free(f);
   } else {
     const pd_pmb_tangent t = {&m->c, NULL};
-    pd_tangent_sums(&L, &t, pd_pmb_bond_tangent, sum);
+    pd_tangent_sums(&L, NULL, &t, pd_pmb_bond_tangent, sum, NULL);
   }
   double dt = INFINITY;
   for (int i = 0; i < n; i++) dt = fmin(dt, pd_stable_dt(rho, sum[i]));

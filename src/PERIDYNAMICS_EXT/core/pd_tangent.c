@@ -5,7 +5,8 @@
 
 #include <math.h>
 
-void pd_tangent_sums(const pd_loop *L, const void *ctx, pd_tangent_fn tangent, double *sum)
+void pd_tangent_sums(const pd_loop *L, const double *v, const void *ctx, pd_tangent_fn tangent,
+                     double *sum, double *closing)
 {
   const pd_bond_view *b = L->b;
   const int failing = L->fail != NULL;
@@ -24,6 +25,11 @@ void pd_tangent_sums(const pd_loop *L, const void *ctx, pd_tangent_fn tangent, d
       const double c = tangent(ctx, &bd);
       sum[i] += c * L->vol[bd.j];
       sum[bd.j] += c * L->vol[i];
+      if (v) {
+        const double r = pd_closing_rate(bd.d, bd.len, v + 3 * i, v + 3 * bd.j);
+        if (r > closing[i]) closing[i] = r;
+        if (r > closing[bd.j]) closing[bd.j] = r;
+      }
     }
   }
 }

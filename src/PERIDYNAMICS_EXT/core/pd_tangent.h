@@ -29,8 +29,22 @@ typedef double (*pd_tangent_fn)(const void *ctx, const pd_bond *bd);
 /* sum[i] += |C| V_j and sum[j] += |C| V_i over the bonds that act now
  * (intact ones, and broken ones while they push: pd_bond_inactive). The
  * caller zeroes sum over owned and ghost atoms and adds the ghosts' share
- * onto their owners. L->f and L->tally are not used. */
-void pd_tangent_sums(const pd_loop *L, const void *ctx, pd_tangent_fn tangent, double *sum);
+ * onto their owners. L->f and L->tally are not used.
+ * With velocities v (3 per atom, owned + ghost; or NULL), closing[] gets
+ * at both ends the largest rate at which a bond closes, relative to its
+ * length: max(0, -d|Y|/dt) / |Y| (1/time; the caller takes the ghosts'
+ * largest onto their owners): the estimate linearizes about the current
+ * lengths, so a step must not close a bond by much of its length. */
+void pd_tangent_sums(const pd_loop *L, const double *v, const void *ctx, pd_tangent_fn tangent,
+                     double *sum, double *closing);
+
+/* The relative closing rate of a pair d = x_j - x_i of length len at
+ * velocities vi, vj: max(0, -d|Y|/dt) / |Y|. */
+static inline double pd_closing_rate(const double d[3], double len, const double *vi, const double *vj)
+{
+  const double rate = -((vj[0] - vi[0]) * d[0] + (vj[1] - vi[1]) * d[1] + (vj[2] - vi[2]) * d[2]);
+  return rate > 0.0 && len > 0.0 ? rate / (len * len) : 0.0;
+}
 
 /* Bond-based (pd_pmb, MS07 eq. 14): t = c w s; ctx is a pd_pmb_tangent. */
 typedef struct pd_pmb_tangent {
