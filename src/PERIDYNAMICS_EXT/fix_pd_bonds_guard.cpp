@@ -71,8 +71,8 @@ std::string FixPDBonds::blow_up(int i, const char *what, double value)
   const double est = stable_dt;
   return fmt::format("Fix pd/bonds: the run is unstable at step {}: atom {} at ({:.6g}, {:.6g}, "
                      "{:.6g}) has {} {:.6g}{}. {}Likely cause: the time step {:.6g} is {:.3g} times "
-                     "the stable estimate {:.6g} (reduce it), or an impact faster than the model "
-                     "resolves",
+                     "the stable estimate {:.6g} (reduce it; fix pd/timestep follows the state as "
+                     "it stiffens), or an impact faster than the model resolves",
                      update->ntimestep, atom->tag[i], x[i][0], x[i][1], x[i][2], what, value,
                      std::isfinite(value) ? fmt::format(" (above {:.3g}: it would move more than half "
                                                         "the horizon in one step)", guard_step / update->dt)
