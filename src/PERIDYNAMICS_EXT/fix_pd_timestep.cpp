@@ -48,7 +48,7 @@ static const char *const CAUSES[] = {"material", "compression", "contact", "trav
 FixPDTimestep::FixPDTimestep(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), every(10), safety(0.8), travel(0.05), dtmin(0.0), dtmax(INFINITY), grow(1.1), material(nullptr),
     contact(nullptr), estimate(0.0), nchanges(0), dt_set(0.0), interval(1), next_check(-1), current(nullptr),
-    reference(nullptr), springs(nullptr), closing(nullptr), nmax(0)
+    reference(nullptr), springs(nullptr), closing(nullptr), contact_closing(nullptr), nmax(0)
 {
   nevery = 1;    // LAMMPS calls end_of_step every step: the cheap check
   for (int iarg = 3; iarg < narg; iarg += 2) {
@@ -100,6 +100,7 @@ FixPDTimestep::~FixPDTimestep()
   memory->destroy(reference);
   memory->destroy(springs);
   memory->destroy(closing);
+  memory->destroy(contact_closing);
 }
 
 int FixPDTimestep::setmask()
@@ -178,24 +179,23 @@ FixPDTimestep::Limit FixPDTimestep::limiting_atom()
     memory->destroy(reference);
     memory->destroy(springs);
     memory->destroy(closing);
+    memory->destroy(contact_closing);
     memory->create(current, nmax, "pd/timestep:current");
     memory->create(reference, nmax, "pd/timestep:reference");
-    memory->create(springs, 2 * nmax, "pd/timestep:springs");
+    memory->create(springs, nmax, "pd/timestep:springs");
     memory->create(closing, nmax, "pd/timestep:closing");
+    memory->create(contact_closing, nmax, "pd/timestep:contact_closing");
   }
   material->stiffness_sums(current, reference, closing);
   if (contact) {
     const int nall = atom->nlocal + atom->nghost;
-    for (int i = 0; i < nall; i++) springs[i] = 0.0;
-    double *pairs_closing = springs + nmax;    // the contact pairs' rates, then the largest of both
-    for (int i = 0; i < nall; i++) pairs_closing[i] = 0.0;
-    contact->tangent_sum(springs, pairs_closing, contact_reach());
+    for (int i = 0; i < nall; i++) springs[i] = contact_closing[i] = 0.0;
+    contact->tangent_sum(springs, contact_closing, contact_reach());
     material->sum_to_owners(springs);
-    material->max_to_owners(pairs_closing);
-    for (int i = 0; i < atom->nlocal; i++) closing[i] = std::max(closing[i], pairs_closing[i]);
+    material->max_to_owners(contact_closing);
+    for (int i = 0; i < atom->nlocal; i++) closing[i] = std::max(closing[i], contact_closing[i]);
   } else
     for (int i = 0; i < atom->nlocal; i++) springs[i] = 0.0;
-  // a = ftm2v f / m in every unit system (rmass is the density, f a force density)
   struct {
     double dt;
     int rank;
@@ -203,9 +203,10 @@ FixPDTimestep::Limit FixPDTimestep::limiting_atom()
   double stable = INFINITY;
   int imin = -1, travels = 0, kinematic = CAUSE_TRAVEL;
   for (int i = 0; i < atom->nlocal; i++) {
+    // a = ftm2v f / m in every unit system (rmass is the density, f a force density)
     const double dt = pd_stable_dt(atom->rmass[i], force->ftm2v * (current[i] + springs[i]));
     stable = fmin(stable, dt);
-    // and no bond or contact closes by more than 'travel' of its length
+    // no particle travels, no bond or contact closes, more than 'travel' in a step
     const double dt_travel = travel_dt(i);
     const double dt_closing = travel > 0.0 && closing[i] > 0.0 ? travel / closing[i] : INFINITY;
     const double allowed = fmin(safety * dt, fmin(dt_travel, dt_closing));

@@ -46,6 +46,7 @@ class FixPDTimestep : public Fix {
   bigint next_check;      // the step of the next check
   double *current, *reference, *springs;    // per-atom stiffness sums
   double *closing;        // per atom: the largest relative closing rate of its bonds and contacts
+  double *contact_closing;    // the same of its contacts alone
   int nmax;
 
   struct Limit;
