@@ -67,6 +67,7 @@ validate: build
 	python3 tools/accuracy/run.py --mode short --lmp $(LMP) --exact $(BUILD_DIR)/pd_exact --out $(BUILD_DIR)/accuracy-short
 	PDEXT_LMP=$(LMP) PDEXT_VALIDATE=1 python3 unittest/lammps/test_fracture.py
 	./examples/riemann-2d/run.sh $(LMP)
+	for t in unittest/stability/test_*.py; do PDEXT_LMP=$(LMP) PDEXT_VALIDATE=1 python3 $$t || exit 1; done
 	./examples/plate-impact-2d/run.sh $(LMP)
 	./unittest/valgrind/run.sh $(LMP)
 

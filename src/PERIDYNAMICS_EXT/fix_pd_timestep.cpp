@@ -158,8 +158,9 @@ double FixPDTimestep::travel_dt(int i) const
   return root > 0.0 ? 2.0 * reach / root : INFINITY;
 }
 
-// How much closer two particles may come before the next estimate, with
-// the step at most doubled: contacts about to form count already.
+// How much closer two particles may come in 'every' steps at twice the
+// step: contacts about to form count already (the same reach at every
+// check, so that a check soon after another does not undo it).
 double FixPDTimestep::contact_reach() const
 {
   double **v = atom->v;
@@ -168,7 +169,7 @@ double FixPDTimestep::contact_reach() const
     vmax = fmax(vmax, v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
   double all;
   MPI_Allreduce(&vmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return 2.0 * sqrt(all) * interval * 2.0 * update->dt;
+  return 2.0 * sqrt(all) * every * 2.0 * update->dt;
 }
 
 FixPDTimestep::Limit FixPDTimestep::limiting_atom()
