@@ -28,18 +28,9 @@ FULL = os.environ.get("PDEXT_VALIDATE") == "1"
 HERE = os.path.dirname(os.path.abspath(__file__))
 POTENTIALS = os.path.abspath(os.path.join(HERE, "../../potentials"))
 
-# kinetic + elastic + dissipated (broken bonds) energy in joules (thermo
-# energies are sums of densities)
-ENERGY = """compute frac all pd/fracture
-compute vf all property/atom vfrac
-compute keV all ke/atom
-variable keJ atom c_keV*c_vf
-compute KEJ all reduce sum v_keJ
-compute peV all pe/atom
-variable peJ atom c_peV*c_vf
-compute PEJ all reduce sum v_peJ
-variable etot equal c_KEJ+c_PEJ+c_frac[2]
-"""
+# kinetic + elastic + dissipated (broken bonds) energy in joules
+ENERGY = replace_exact(ENERGY_JOULES, "variable etot equal c_KEJ+c_PEJ\n",
+                       "compute frac all pd/fracture\nvariable etot equal c_KEJ+c_PEJ+c_frac[2]\n")
 THERMO = "thermo_style custom step dt time v_etot v_work atoms\nthermo_modify lost warn norm no\n"
 ADAPTIVE = "fix ts all pd/timestep"
 
@@ -133,6 +124,32 @@ def describe(r):
         return r["error"][:140]
     return (f"{r.get('steps', 0)} steps, {r.get('time', 0):.3g} s simulated, smallest dt {r.get('dtmin', 0):.3g}; "
             f"energy growth {r['growth']:+.3g}; nearest non-partner {r['nearest']:.3f} spacings")
+
+
+def setup_estimates(out):
+    """The setup's stable steps: the material's (MS07 eq. 43), the contact springs' (inf: no contact)."""
+    est = log_value(out, r"stable time step estimate \(MS07 eq. 43\) ([0-9.eE+-]+)")
+    contact = log_value(out, r"stable time step estimate of the contact springs ([0-9.eE+-]+)")
+    return est, contact if math.isfinite(contact) else math.inf
+
+
+def fixed_runs(deck, d, base, scene, horizon, spacing, tol, apart, out):
+    """The scene at the fixed steps a user would take from the setup report
+    of 'out': 0.8 of the material's estimate, and 0.8 of the contact
+    springs' where that is smaller. Prints each; returns {label: outcome}."""
+    est, est_contact = setup_estimates(out)
+    print(f"{scene}: setup estimates: material (MS07 eq. 43) {est:.3g}, contact springs {est_contact:.3g}")
+    results = {}
+    steps = [(0.8 * est, "0.8 of the setup estimate")]
+    if est_contact < est:
+        steps.append((0.8 * est_contact, "0.8 of the contact springs' estimate"))
+    for dt, what in steps:
+        fout, frows, fframes, fwall = run_scene(deck, d, dict(base, adapt="", dt=dt), f"fixed{dt:.3g}")
+        fixed = outcome(fout, frows, fframes, horizon, spacing, tol, apart)
+        print(f"SCENE {scene}: fixed dt {dt:.3g} ({what}): {'stable' if fixed['stable'] else 'UNSTABLE'}: "
+              f"{describe(fixed)}; {fwall:.1f} s wall")
+        results[what] = fixed
+    return results
 
 
 def assess(scene, r, tol, apart, wall):

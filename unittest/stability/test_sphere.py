@@ -49,21 +49,10 @@ def summary(out):
 
 out, rows, frames, wall = run_scene(deck, d, dict(base, adapt=ADAPTIVE), "adaptive")
 r = outcome(out, rows, frames, HORIZON, h, TOL, APART)
-est = log_value(out, r"stable time step estimate \(MS07 eq. 43\) ([0-9.eE+-]+)")
-est_contact = log_value(out, r"stable time step estimate of the contact springs ([0-9.eE+-]+)")
-print(f"{name}: setup estimates: material (MS07 eq. 43) {est:.3g}, contact springs {est_contact:.3g}")
 print(f"{name}: adaptive: {summary(out)}")
-for dt, what in ((0.8 * est, "0.8 of the setup estimate"),
-                 (0.8 * min(est, est_contact), "0.8 of the contact springs' estimate")):
-    fout, frows, fframes, fwall = run_scene(deck, d, dict(base, adapt="", dt=dt), f"fixed{dt:.3g}")
-    fixed = outcome(fout, frows, fframes, HORIZON, h, TOL, APART)
-    print(f"SCENE {name}: fixed dt {dt:.3g} ({what}): {'stable' if fixed['stable'] else 'UNSTABLE'}: "
-          f"{describe(fixed)}; {fwall:.1f} s wall")
-    print(f"{name}: fixed dt {dt:.3g}: {summary(fout)}")
-    if dt == 0.8 * est:
-        check(f"at the fixed step {dt:.3g} (0.8 of the setup estimate, {dt / est_contact:.2f} of the contact "
-              "springs') the scene blows up or gains energy (what the adaptive step must prevent)",
-              not fixed["stable"], describe(fixed))
+fixed = fixed_runs(deck, d, base, name, HORIZON, h, TOL, APART, out)["0.8 of the setup estimate"]
+check("at 0.8 of the setup estimate the scene blows up or gains energy (what the adaptive step must prevent)",
+      not fixed["stable"], describe(fixed))
 check(f"{name}: the adaptive run reaches the simulated time", r.get("time", 0) >= tmax * 0.999,
       f"{r.get('time', 0):.3g} s")
 assess(name, r, TOL, APART, wall)
