@@ -36,7 +36,8 @@ typedef pd_bond_force (*pd_force_fn)(void *mat, const pd_bond *bd, double eps);
 typedef int (*pd_breaks_now_fn)(const pd_failure *f, const pd_bond *bd, double eps,
                                 const pd_bond_force *bf);
 typedef int (*pd_breaks_after_fn)(const pd_failure *f, const pd_bond *bd, double eps);
-typedef void (*pd_law_note_fn)(const pd_failure *f, const pd_bond *bd);
+typedef double (*pd_law_notes_fn)(const pd_failure *f, const pd_bond *bd);
+typedef void (*pd_law_note_fn)(const pd_failure *f, const pd_bond *bd, double value);
 
 /* Slot idx of atom bd->i's row: its far end, types, weight and reference
  * length (intact unless 'failing'; a reference walk, not 'current', takes
@@ -76,7 +77,8 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
               double *restrict f, double fi[3], pd_bond *bd, int idx, pd_break_sums *sums,
               pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-              pd_law_note_fn note, int weighted, int tallied, int failing, int directed)
+              pd_law_notes_fn notes, pd_law_note_fn note, int weighted, int tallied, int failing,
+              int directed)
 {
   pd_bond_load(bd, b, type, trow, x, xi, fail, idx, weighted, failing, 1);
   const double eps = strain(mat, bd);
@@ -119,7 +121,7 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
     }
   }
   if (failing && !bd->broken) {
-    note(fail, bd);
+    note(fail, bd, notes(fail, bd));
     if (breaks_after(fail, bd, eps))
       pd_break_bond(fail, sums, bd, bf.release_i, bf.release_j, vi, vj, 0);
   }
@@ -145,7 +147,7 @@ pd_bond_load_ahead(pd_bond *bd, const pd_bond_view *restrict b, const int *restr
 
 /* The first pass over bonds k0 .. k0+m-1 of row 'row': every intact bond's
  * force on i per V_i V_j into g (component c of bond k at c * PD_CHUNK + k)
- * and, for the failure law's note, its length (at 3 * PD_CHUNK + k). No
+ * and, for the failure law's note, what it notes (at 3 * PD_CHUNK + k). No
  * store that another bond could read, so the compiler vectorizes it (the
  * far ends' positions gathered). Returns nonzero if a bond is broken or
  * breaks now or after (the laws' questions have no side effects): the
@@ -155,7 +157,7 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
                const double *restrict x, const double xi[3], int i, int row, int m,
                double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-               int weighted, int failing)
+               pd_law_notes_fn notes, int weighted, int failing)
 {
   int special = 0;
   for (int k = 0; k < m; k++) {
@@ -167,7 +169,7 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
     const pd_bond_force bf = force(mat, &bd, eps);
     if (failing) {
       special |= breaks_now(fail, &bd, eps, &bf) | breaks_after(fail, &bd, eps);
-      g[3 * PD_CHUNK + k] = bd.len;
+      g[3 * PD_CHUNK + k] = notes(fail, &bd);
     }
     const double tl = bd.len > 0.0 ? bf.t / bd.len : 0.0;
     for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = tl * bd.d[c];
@@ -185,7 +187,8 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                  const double *restrict x, const double *restrict vol, double *restrict f,
                  pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                  pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-                 pd_law_note_fn note, int weighted, int tallied, int failing, int directed)
+                 pd_law_notes_fn notes, pd_law_note_fn note, int weighted, int tallied, int failing,
+              int directed)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int chunked = !tallied && !directed;
@@ -206,9 +209,10 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       /* (one copy of the first pass for one atom type: no type loads) */
       if (chunked &&
           !(type ? pd_force_chunk(b, type, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, breaks_now, breaks_after, weighted, failing)
+                                  strain, force, breaks_now, breaks_after, notes, weighted, failing)
                  : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, breaks_now, breaks_after, weighted, failing))) {
+                                  strain, force, breaks_now, breaks_after, notes, weighted,
+                                  failing))) {
         for (int k = 0; k < m; k++) {
           const int j = b->far[row + k0 + k];
           const double vj = vol[j];
@@ -218,19 +222,15 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
           }
           if (failing) {
             bd.j = j;
-            bd.tj = type ? type[j] : 1;
-            bd.tij = trow + bd.tj;
-            bd.r0 = b->len0[row + k0 + k];
-            bd.len = g[3 * PD_CHUNK + k];
-            note(fail, &bd);
+            note(fail, &bd, g[3 * PD_CHUNK + k]);
           }
         }
         continue;
       }
       for (int k = 0; k < m; k++)
         pd_force_bond(b, type, trow, x, xi, vol, f, fi, &bd, row + k0 + k, &sums, tally, fail,
-                      mat, strain, force, breaks_now, breaks_after, note, weighted, tallied,
-                      failing, directed);
+                      mat, strain, force, breaks_now, breaks_after, notes, note, weighted,
+                      tallied, failing, directed);
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
   }
@@ -239,11 +239,12 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
 
 PD_INLINE void
 pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn force,
-              pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after, pd_law_note_fn note,
-              int weighted, int tallied, int failing, int directed)
+              pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after, pd_law_notes_fn notes,
+              pd_law_note_fn note, int weighted, int tallied, int failing, int directed)
 {
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->tally, L->fail, mat, strain,
-                   force, breaks_now, breaks_after, note, weighted, tallied, failing, directed);
+                   force, breaks_now, breaks_after, notes, note, weighted, tallied, failing,
+                   directed);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */
@@ -253,7 +254,8 @@ typedef void (*pd_kernel)(const pd_loop *L, void *mat);
   static void prefix##_##law##_##failing##weighted##tallied(const pd_loop *L, void *mat) \
   {                                                                                       \
     pd_force_loop(L, mat, strain, force, pd_law_##law##_now, pd_law_##law##_after,        \
-                  pd_law_##law##_note, weighted, tallied, failing, directed);             \
+                  pd_law_##law##_notes, pd_law_##law##_note, weighted, tallied, failing,  \
+                  directed);                                                              \
   }
 #define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing, directed) \
   PD_KERNEL_(prefix, strain, force, law, failing, 0, 0, directed)             \

@@ -30,9 +30,15 @@ static inline int pd_law_energy_after(const pd_failure *f, const pd_bond *bd, do
   return 0;
 }
 
-static inline void pd_law_energy_note(const pd_failure *f, const pd_bond *bd)
+static inline double pd_law_energy_notes(const pd_failure *f, const pd_bond *bd)
 {
   (void) f, (void) bd;
+  return 0.0;
+}
+
+static inline void pd_law_energy_note(const pd_failure *f, const pd_bond *bd, double value)
+{
+  (void) f, (void) bd, (void) value;
 }
 
 /* Calibration. s_c(xi) = beta omega |xi|^-2 with omega the influence

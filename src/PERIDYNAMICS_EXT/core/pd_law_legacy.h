@@ -31,12 +31,17 @@ static inline int pd_law_legacy_after(const pd_failure *f, const pd_bond *bd, do
 }
 
 /* every intact bond that acted: the candidate s0 of both ends */
-static inline void pd_law_legacy_note(const pd_failure *f, const pd_bond *bd)
+static inline double pd_law_legacy_notes(const pd_failure *f, const pd_bond *bd)
 {
   const pd_law_legacy *p = (const pd_law_legacy *) f->params;
   const int tij = bd->tij;
   const double s = (bd->len - bd->r0) / bd->r0;
-  const double cand = p->s00[tij] - p->alpha[tij] * s;
+  return p->s00[tij] - p->alpha[tij] * s;
+}
+
+static inline void pd_law_legacy_note(const pd_failure *f, const pd_bond *bd, double cand)
+{
+  const pd_law_legacy *p = (const pd_law_legacy *) f->params;
   if (cand > p->s0_new[bd->i]) p->s0_new[bd->i] = cand;
   if (cand > p->s0_new[bd->j]) p->s0_new[bd->j] = cand;
 }

@@ -18,9 +18,15 @@ static inline int pd_law_none_after(const pd_failure *f, const pd_bond *bd, doub
   return 0;
 }
 
-static inline void pd_law_none_note(const pd_failure *f, const pd_bond *bd)
+static inline double pd_law_none_notes(const pd_failure *f, const pd_bond *bd)
 {
   (void) f, (void) bd;
+  return 0.0;
+}
+
+static inline void pd_law_none_note(const pd_failure *f, const pd_bond *bd, double value)
+{
+  (void) f, (void) bd, (void) value;
 }
 
 #endif

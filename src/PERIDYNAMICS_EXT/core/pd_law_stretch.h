@@ -23,9 +23,15 @@ static inline int pd_law_stretch_after(const pd_failure *f, const pd_bond *bd, d
   return 0;
 }
 
-static inline void pd_law_stretch_note(const pd_failure *f, const pd_bond *bd)
+static inline double pd_law_stretch_notes(const pd_failure *f, const pd_bond *bd)
 {
   (void) f, (void) bd;
+  return 0.0;
+}
+
+static inline void pd_law_stretch_note(const pd_failure *f, const pd_bond *bd, double value)
+{
+  (void) f, (void) bd, (void) value;
 }
 
 /* Critical stretch from the fracture energy for bond-based elasticity

@@ -4,16 +4,18 @@
  *   pd_law_<name>_now   does an intact bond break in this evaluation,
  *                       before its force acts (it then acts with half)?
  *   pd_law_<name>_after does it break after its force acted?
- *   pd_law_<name>_note  what the law keeps of every intact bond that acted
- *                       (its per-atom state; may do nothing).
- * _now and _after only answer (no side effects): the loop asks them for a
- * row's bonds ahead of their turn, in its vectorized pass, and again.
+ *   pd_law_<name>_notes what the law keeps of every intact bond that acted
+ *                       (a number per bond, e.g. a candidate for its ends'
+ *                       state), and
+ *   pd_law_<name>_note  keeps it (its per-atom state; may do nothing).
+ * _now, _after and _notes only answer (no side effects): the loop asks them
+ * for a row's bonds ahead of their turn, in its vectorized pass, and again.
  * To add a law: write its header, add one line to the list below and its
  * #include to pd_law_hooks.h. */
 #ifndef PD_LAWS_H
 #define PD_LAWS_H
 
-/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_note. */
+/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_notes/_note. */
 #define PD_FAILURE_LAWS(X, ...)          \
   X(NONE, none, __VA_ARGS__)             \
   X(STRETCH, stretch, __VA_ARGS__)       \
