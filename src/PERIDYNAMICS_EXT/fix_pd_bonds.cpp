@@ -36,7 +36,7 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), serving(false), built_tag(nullptr), use_weights(0), nhistory(0), built(0),
     maxpartner(1), nrows(0), nowned(0), npartner(nullptr), partner(nullptr), r0(nullptr), weight(nullptr),
     history(nullptr), far(nullptr), nlost_local(0), intact_at_map(-1), stored_total(0),
-    nlost_reported(0), family_key(0.0), record(lmp), stable_dt(0.0), comm_array(nullptr),
+    nlost_reported(0), warned_images(0), family_key(0.0), record(lmp), stable_dt(0.0), comm_array(nullptr),
     comm_width(1), comm_max(0), guard_step(INFINITY), damaged(0), damaged_example(0), idissipated(-1),
     ifamily_volume(-1), iweighted_volume(-1), fields_from_file(false)
 {
@@ -127,6 +127,7 @@ void FixPDBonds::take_family_spec()
   serving = source != nullptr;
   spec = serving ? source->family_spec() : PDFamilySpec();
   stable_dt = 0.0;
+  warned_images = 0;
   if (!serving) return;
   if (!built) family_key = spec.key;
   else if (family_key != spec.key)
@@ -247,6 +248,14 @@ void FixPDBonds::map_partners(bool setup)
   double **x = atom->x;
   std::string overstretched;
   bigint kept[2] = {0, 0};    // bonds kept, and how many of them intact (count_lost)
+  // a bond within half the skin of half a periodic box side may reach
+  // past it before the next reneighboring: its closest image is then
+  // another one, and the bond jumps there
+  double ambiguous[3];
+  for (int c = 0; c < 3; c++)
+    ambiguous[c] = domain->periodicity[c] ? (0.5 * domain->prd[c] - 0.5 * neighbor->skin) * (1.0 + 1e-9)
+                                          : INFINITY;    // (a lattice bond exactly there is not warned about)
+  bigint nambiguous = 0;
   for (int i = 0; i < nowned; i++) {
     for (int k = 0; k < npartner[i]; k++) {
       int j = atom->map(partner[i][k]);
@@ -255,6 +264,7 @@ void FixPDBonds::map_partners(bool setup)
       if (j >= 0) {
         const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
         const double len2 = dx * dx + dy * dy + dz * dz;
+        nambiguous += fabs(dx) > ambiguous[0] || fabs(dy) > ambiguous[1] || fabs(dz) > ambiguous[2];
         if (len2 > cutsq) j = -1;
         // an intact bond eleven times its length: the run has blown up
         else if (len2 > MAX_INTACT_LENGTH * MAX_INTACT_LENGTH * r0[i][k] * r0[i][k] && r0[i][k] > 0.0 &&
@@ -275,6 +285,7 @@ void FixPDBonds::map_partners(bool setup)
     kept[0] += npartner[i];
   }
   pd_error_collective(lmp, overstretched);
+  warn_ambiguous_images(nambiguous);
   const bigint lost = count_lost(kept[0], kept[1]);
   // minimize's line search moves atoms by up to 'min_modify dmax' (0.1
   // length units by default: 10 cm in SI), which tears bonds that physics
@@ -283,6 +294,21 @@ void FixPDBonds::map_partners(bool setup)
     error->all(FLERR, "Fix pd/bonds: bond partners moved beyond the ghost cutoff during "
                "minimize; limit the line search step with 'min_modify dmax' (a small "
                "fraction of the particle spacing)");
+}
+
+// Bonds that reach near half a periodic box side (map_partners): warned
+// about once per run, with their count.
+void FixPDBonds::warn_ambiguous_images(bigint mine)
+{
+  bigint all;
+  MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all == 0 || warned_images) return;
+  warned_images = 1;
+  if (comm->me == 0)
+    error->warning(FLERR, "Fix pd/bonds: at step {} {} bonds span nearly half the periodic box (within half "
+                   "the skin): a bond that reaches past half the box jumps to another periodic image "
+                   "and its energy with it; make the periodic box longer (twice the longest bond and "
+                   "more)", update->ntimestep, all);
 }
 
 // Intact bonds lost since the last mapping, over all ranks: those that

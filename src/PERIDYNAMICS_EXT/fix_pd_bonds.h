@@ -136,6 +136,7 @@ class FixPDBonds : public Fix {
   bigint intact_at_map;    // intact bonds over all ranks at the last mapping (-1: none yet)
   bigint stored_total;     // bonds stored over all ranks at the last mapping
   bigint nlost_reported;   // the global count last warned about
+  int warned_images;       // the periodic-image warning was given this run
   double family_key;       // PDFamilySpec::key of the settings the families were built for
   PDFractureRecord record; // broken counts, dissipated energy, fresh-bond replay
   double stable_dt;        // this run's stable time step estimate (0: not known)
@@ -174,6 +175,7 @@ class FixPDBonds : public Fix {
   void map_partners(bool setup);
   void check_stored_partners();
   bigint count_lost(bigint stored, bigint intact);
+  void warn_ambiguous_images(bigint mine);
   void report_bonds_by_type(const std::vector<bigint> &touching);
   // the blow-up guard (fix_pd_bonds_guard.cpp)
   double guard_step;        // the largest distance an atom may move in one step

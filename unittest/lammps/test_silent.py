@@ -42,6 +42,17 @@ out, _ = run(TWO + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.25 horizo
 check("mixed types bond across the interface (the count is logged)",
       "bonds between types: 1-2" in out and "bonds between types: 1-2 0;" not in out)
 
+# --- bonds near half a periodic box ----------------------------------------
+# A bond that reaches past half the periodic box jumps to another image at
+# the next reneighboring, and its energy with it. In a box of 7 spacings
+# (horizon 3, half the skin 1) a lattice bond of 3 spacings is within half
+# the skin of half the box: a WARNING; in 8 spacings it is not.
+out, _ = run(block(7) + PAIRS["pd/ordinary"] + "run 0\n", d)
+check("bonds within half the skin of half the periodic box: a WARNING with their count",
+      re.search(r"WARNING: Fix pd/bonds: at step 0 \d+ bonds span nearly half the periodic box", out) is not None)
+out, _ = run(block(8) + PAIRS["pd/ordinary"] + "run 0\n", d)
+check("... none in a box of 8 spacings", "span nearly half the periodic box" not in out)
+
 # --- pair_style none between runs -----------------------------------------
 MOVE = ROUGH_VELOCITY + "fix 1 all nve\ntimestep 1e-8\ncompute dmg all pd/damage\n" \
     "compute dmax all reduce max c_dmg\ncompute frac all pd/fracture\n" \
