@@ -15,6 +15,7 @@
 #include "fix_pd_timestep.h"
 #include "pair_pd_bond.h"
 #include "pair_pd_contact.h"
+#include "pair_pd_corr.h"
 #include "pair_pd_ordinary.h"
 
 using namespace LAMMPS_NS;
@@ -41,6 +42,8 @@ const Style styles[] = {
     {"pair", "pd/bond", "bond-based peridynamics (PMB, microplastic)", &pair_creator<PairPDBond>, nullptr},
     {"pair", "pd/ordinary", "ordinary state-based peridynamics (Seth-Hill strain)",
      &pair_creator<PairPDOrdinary>, nullptr},
+    {"pair", "pd/corr", "correspondence peridynamics (classical laws, extended Seth-Hill strain)",
+     &pair_creator<PairPDCorr>, nullptr},
     {"pair", "pd/contact", "short-range peridynamic contact", &pair_creator<PairPDContact>, nullptr},
     {"fix", "pd/bonds", "peridynamic bond families", nullptr, &styled_creator<FixPDBonds>},
     {"fix", "pd/precrack", "peridynamic pre-cracks", nullptr, &styled_creator<FixPDPrecrack>},

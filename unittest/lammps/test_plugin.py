@@ -27,10 +27,18 @@ check("without the plugin the plain LAMMPS does not know pd/bond", "Unrecognized
 out, _ = run(LOAD + "plugin list\n", d)
 check("the plugin registers the package's styles", all(s in out for s in (
     "pair style plugin pd/bond", "pair style plugin pd/ordinary", "pair style plugin pd/contact",
-    "fix style plugin pd/bonds", "fix style plugin pd/precrack", "compute style plugin pd/damage",
+    "pair style plugin pd/corr",
+    "fix style plugin pd/bonds", "fix style plugin pd/precrack", "fix style plugin pd/timestep",
+    "compute style plugin pd/damage",
     "compute style plugin pd/atom", "compute style plugin pd/fracture")), out[-600:])
 
 STEPS = ROUGH_VELOCITY + "fix 1 all nve\ntimestep 1.0e-7\nthermo 100\n"
+out, _ = run(LOAD + block(8) + STEPS + PAIRS["pd/bond legacy"] + "fix ts all pd/timestep\nrun 20\n", d)
+check("the plugin's fix pd/timestep sets the step in the plain LAMMPS",
+      re.search(r"pd/timestep: step 0 \(run start\): dt 1e-07 -> \S+ \(stable", out) is not None, out[-400:])
+out, _ = run(LOAD + block(8) + STEPS + f"pair_style pd/corr model elastic\npair_coeff * * E 1e9 nu 0.25 "
+             f"horizon {HORIZON}\nrun 20\n", d)
+check("the plugin's pd/corr runs in the plain LAMMPS", "pd/corr: extended (T14 4.2) correspondence, model elastic" in out, out[-400:])
 final = {}
 for style in ("peri/pmb", "pd/bond legacy"):
     tag = style.replace(" ", "_").replace("/", "_")
