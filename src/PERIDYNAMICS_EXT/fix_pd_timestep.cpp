@@ -42,7 +42,6 @@ struct FixPDTimestep::Limit {
   int cause;         // CAUSE_*
   double stiffening; // its material stiffness now over the reference state's
 };
-enum { CAUSE_MATERIAL, CAUSE_COMPRESSION, CAUSE_CONTACT, CAUSE_TRAVEL, CAUSE_CLOSING };
 static const char *const CAUSES[] = {"material", "compression", "contact", "travel", "closing"};
 
 FixPDTimestep::FixPDTimestep(LAMMPS *lmp, int narg, char **arg) :
@@ -116,6 +115,20 @@ void FixPDTimestep::init()
   contact = dynamic_cast<PairPDContact *>(force->pair_match("pd/contact", 0, 0));
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix pd/timestep does not work with run_style respa");
+  run = RunSummary();
+}
+
+// One line at the end of each run: what the many lines of changes add up to.
+void FixPDTimestep::post_run()
+{
+  if (comm->me != 0) return;
+  std::string causes;
+  for (int c = 0; c < NCAUSES; c++)
+    if (run.changes[c]) causes += fmt::format("{}{} {}", causes.empty() ? "" : ", ", CAUSES[c], run.changes[c]);
+  utils::logmesg(lmp, "pd/timestep: this run: {} checks, {} changes of the step{}; step {:.6g} .. {:.6g}\n",
+                 run.checks, run.total(), causes.empty() ? "" : " (limited by " + causes + ")",
+                 std::isfinite(run.dtmin) ? run.dtmin : update->dt,
+                 std::isfinite(run.dtmin) ? run.dtmax : update->dt);
 }
 
 // A run starts: its first step comes from the state it starts in, unless
@@ -238,6 +251,7 @@ FixPDTimestep::Limit FixPDTimestep::limiting_atom()
 void FixPDTimestep::check(const char *when)
 {
   const Limit lim = limiting_atom();
+  run.checks++;
   // the next check: at once while the state stiffens fast (the stable step
   // fell by more than 'grow' since the last one), else after twice the
   // interval, up to 'every' steps
@@ -257,6 +271,9 @@ void FixPDTimestep::check(const char *when)
   if (dt_set > 0.0 && old <= allowed && old * grow >= allowed) return;
   const double dt = fmax(fmin(lim.dt / grow, dtmax), dtmin);
   set_dt(dt);
+  run.changes[lim.cause]++;
+  run.dtmin = fmin(run.dtmin, dt);
+  run.dtmax = fmax(run.dtmax, dt);
   if (comm->me == 0) {
     const std::string why = lim.cause == CAUSE_COMPRESSION
         ? fmt::format("compression: {:.3g}x its reference stiffness", lim.stiffening)

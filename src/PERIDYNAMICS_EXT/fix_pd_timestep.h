@@ -16,6 +16,8 @@ FixStyle(pd/timestep,FixPDTimestep);
 
 #include "fix.h"
 
+#include <cmath>
+
 namespace LAMMPS_NS {
 
 class FixPDTimestep : public Fix {
@@ -26,6 +28,7 @@ class FixPDTimestep : public Fix {
   void init() override;
   void setup(int) override;
   void end_of_step() override;
+  void post_run() override;
   double compute_scalar() override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
@@ -48,6 +51,21 @@ class FixPDTimestep : public Fix {
   double *closing;        // per atom: the largest relative closing rate of its bonds and contacts
   double *contact_closing;    // the same of its contacts alone
   int nmax;
+
+  // what limits the step (their names: CAUSES in the .cpp)
+  enum { CAUSE_MATERIAL, CAUSE_COMPRESSION, CAUSE_CONTACT, CAUSE_TRAVEL, CAUSE_CLOSING, NCAUSES };
+  // what this run's checks did (the summary line at its end)
+  struct RunSummary {
+    bigint checks = 0;
+    bigint changes[NCAUSES] = {};    // by cause
+    double dtmin = INFINITY, dtmax = 0.0;
+    bigint total() const
+    {
+      bigint n = 0;
+      for (bigint c : changes) n += c;
+      return n;
+    }
+  } run;
 
   struct Limit;
   void check(const char *when);

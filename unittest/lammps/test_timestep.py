@@ -52,6 +52,11 @@ check("... and the log names compression as the cause", any(w == "compression" f
 grew = [c for c in ch[1:] if c[2] > c[1]]
 check("the step grows back as the block rebounds", len(grew) > 0, f"{len(grew)} increases")
 check("every step the fix set is below safety x stable of its check", all(b <= 0.8 * st * (1 + 1e-12) for _, _, b, st, _ in ch))
+summary = re.search(r"pd/timestep: this run: (\d+) checks, (\d+) changes of the step \(limited by ([^)]*)\); "
+                    r"step (\S+) \.\. (\S+)", out)
+check("the run ends with a summary: as many changes as lines, the causes, the range of the step",
+      summary is not None and int(summary.group(2)) == len(ch) and "compression" in summary.group(3) and
+      abs(float(summary.group(4)) - smallest) <= 1e-5 * smallest, summary.group(0) if summary else "no summary")
 dts = [r["Dt"] for r in rows]
 check("thermo reports the changing step", min(dts) < 0.8 * max(dts), f"{min(dts):.3g} .. {max(dts):.3g}")
 spread = energy_spread(rows)
