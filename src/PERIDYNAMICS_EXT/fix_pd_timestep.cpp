@@ -1,11 +1,14 @@
 /* ----------------------------------------------------------------------
-   PERIDYNAMICS_EXT: fix pd/timestep. Every N steps (and when a run
-   starts) each particle's stiffness bound in the current state gives its
-   stable step (core/pd_tangent.h); the smallest over all ranks times the
-   safety factor, and the time in which no particle moves more than a
-   fraction of its spacing (the estimate holds while the arrangement
-   changes little), bound the time step, which is set as fix dt/reset sets
-   it. The step changes only when it leaves a band of width 'grow' below
+   PERIDYNAMICS_EXT: fix pd/timestep. At the start of a run and then at
+   least every N steps, each particle's stiffness bound in the current
+   state gives its stable step (core/pd_tangent.h). The smallest over all
+   ranks times the safety factor, and the kinematic limits (no particle
+   travels, no bond or contact closes, more than a fraction of its spacing
+   or length in a step: the estimate holds while the arrangement changes
+   little), bound the time step, which is set as fix dt/reset sets it.
+   Checks come at every step while the state stiffens fast, and a cheap
+   per-step test takes one at once when a particle starts to travel too
+   far. The step changes only when it leaves a band of width 'grow' below
    what is allowed, so the log (one line per change) stays short.
 ------------------------------------------------------------------------- */
 
@@ -19,11 +22,10 @@
 #include "pair_pd.h"
 #include "pair_pd_contact.h"
 #include "pd_compat.h"
-#include "respa.h"
 #include "update.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 extern "C" {
@@ -45,9 +47,10 @@ struct FixPDTimestep::Limit {
 static const char *const CAUSES[] = {"material", "compression", "contact", "travel", "closing"};
 
 FixPDTimestep::FixPDTimestep(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), every(10), safety(0.8), travel(0.05), dtmin(0.0), dtmax(INFINITY), grow(1.1), material(nullptr),
-    contact(nullptr), estimate(0.0), nchanges(0), dt_set(0.0), interval(1), next_check(-1), current(nullptr),
-    reference(nullptr), springs(nullptr), closing(nullptr), contact_closing(nullptr), nmax(0)
+    Fix(lmp, narg, arg), every(10), safety(0.8), travel(0.05), dtmin(0.0), dtmax(INFINITY),
+    grow(1.1), material(nullptr), contact(nullptr), estimate(0.0), nchanges(0), dt_set(0.0),
+    interval(1), next_check(-1), current(nullptr), reference(nullptr), springs(nullptr),
+    closing(nullptr), contact_closing(nullptr), nmax(0)
 {
   nevery = 1;    // LAMMPS calls end_of_step every step: the cheap check
   for (int iarg = 3; iarg < narg; iarg += 2) {
