@@ -35,6 +35,27 @@ THERMO = "thermo_style custom step dt time v_etot v_work atoms\nthermo_modify lo
 ADAPTIVE = "fix ts all pd/timestep"
 
 
+def scene_dir(thermo=THERMO):
+    """A work directory holding the ENERGY and thermo blocks as energy.in
+    and thermo.in (the decks include them)."""
+    d = workdir()
+    open(f"{d}/energy.in", "w").write(ENERGY)
+    open(f"{d}/thermo.in", "w").write(thermo)
+    return d
+
+
+def summary(out, tag):
+    """The line a deck prints starting with tag (its own numbers), or ''."""
+    return next((l for l in out.splitlines() if l.startswith(tag)), "")
+
+
+def check_reached(scene, r, tmax):
+    """The adaptive run got to the simulated time (the last thermo row is
+    the halt's step: the decks halt on thermo steps)."""
+    check(f"{scene}: the adaptive run reaches the simulated time", r.get("time", 0) >= tmax * 0.999,
+          f"{r.get('time', 0):.3g} s of {tmax:.3g}")
+
+
 def read_frames(path):
     """[(step, {id: (x, y, z)})] of a text dump with 'id x y z'."""
     frames, lines = [], open(path).read().split("ITEM: TIMESTEP\n")[1:]

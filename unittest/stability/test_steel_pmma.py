@@ -20,9 +20,7 @@ particles), 30 us; full (PDEXT_VALIDATE=1): 0.25 mm (14,976 particles),
 40 us."""
 from hardcase import *
 
-d = workdir()
-open(f"{d}/energy.in", "w").write(ENERGY)
-open(f"{d}/thermo.in", "w").write(THERMO)
+d = scene_dir()
 deck = open(os.path.join(HERE, "in.steel_pmma")).read()
 # the same bodies at both resolutions: nx, ny, np in spacings
 h, n, tmax, dumps = (2.5e-4, 2, 4e-5, 20) if FULL else (5e-4, 1, 3e-5, 10)
@@ -38,17 +36,13 @@ base = {"v": 300, "h": h, "nx": 60 * n, "ny": 60 * n, "np": 12 * n, "m": 0, "tma
         "dumps": dumps, "energy": "energy.in", "thermo": "thermo.in", "dt": 2e-8}
 name = "steel on PMMA 300 m/s"
 
-
-def summary(out):
-    return next((l for l in out.splitlines() if l.startswith("STEEL_PMMA")), "")
-
+TAG = "STEEL_PMMA"    # the line the deck prints
 
 out, rows, frames, wall = run_scene(deck, d, dict(base, adapt=ADAPTIVE), "adaptive")
 r = outcome(out, rows, frames, HORIZON, h, TOL, APART)
-print(f"{name}: adaptive: {summary(out)}")
+print(f"{name}: adaptive: {summary(out, TAG)}")
 fixed_runs(deck, d, base, name, HORIZON, h, TOL, APART, out)    # printed: the estimate is conservative here
-check(f"{name}: the adaptive run reaches the simulated time", r.get("time", 0) >= tmax * 0.999,
-      f"{r.get('time', 0):.3g} s")
+check_reached(name, r, tmax)
 causes = re.findall(r"limited by (\w+)", out)
 check(f"{name}: the contact springs limit the adaptive step at some point (log: 'limited by contact')",
       re.search(r"limited by contact", out) is not None,

@@ -20,9 +20,7 @@ energy, and hardcase.assess() holds for the adaptive run with TOL = 0.05
 growth is the oscillation: 1.4% and 1.9%)."""
 from hardcase import *
 
-d = workdir()
-open(f"{d}/energy.in", "w").write(ENERGY)
-open(f"{d}/thermo.in", "w").write(THERMO)
+d = scene_dir()
 deck = open(os.path.join(HERE, "in.vibration")).read()
 STEPS = 100000 if FULL else 10000
 EVERY = 7    # thermo interval: odd, so that the samples do not lock onto the waves' periods
