@@ -19,6 +19,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "neighbor.h"
 #include "pair_pd.h"
 #include "pair_pd_contact.h"
 #include "pd_compat.h"
@@ -50,7 +51,7 @@ FixPDTimestep::FixPDTimestep(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), every(10), safety(0.8), travel(0.05), dtmin(0.0), dtmax(INFINITY),
     grow(1.1), material(nullptr), contact(nullptr), estimate(0.0), nchanges(0), dt_set(0.0),
     interval(1), next_check(-1), current(nullptr), reference(nullptr), springs(nullptr),
-    closing(nullptr), contact_closing(nullptr), nmax(0)
+    closing(nullptr), contact_closing(nullptr), nmax(0), reference_build(-1)
 {
   nevery = 1;    // LAMMPS calls end_of_step every step: the cheap check
   for (int iarg = 3; iarg < narg; iarg += 2) {
@@ -202,8 +203,14 @@ FixPDTimestep::Limit FixPDTimestep::limiting_atom()
     memory->create(springs, nmax, "pd/timestep:springs");
     memory->create(closing, nmax, "pd/timestep:closing");
     memory->create(contact_closing, nmax, "pd/timestep:contact_closing");
+    reference_build = -1;
   }
-  material->stiffness_sums(current, reference, closing);
+  material->current_stiffness_sums(current, closing);
+  // the reference sums change only with the atoms' order (reneighboring)
+  if (reference_build != neighbor->ncalls) {
+    material->reference_stiffness_sums(reference);
+    reference_build = neighbor->ncalls;
+  }
   if (contact) {
     const int nall = atom->nlocal + atom->nghost;
     for (int i = 0; i < nall; i++) springs[i] = contact_closing[i] = 0.0;

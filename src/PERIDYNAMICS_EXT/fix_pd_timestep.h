@@ -51,6 +51,7 @@ class FixPDTimestep : public Fix {
   double *closing;        // per atom: the largest relative closing rate of its bonds and contacts
   double *contact_closing;    // the same of its contacts alone
   int nmax;
+  bigint reference_build;    // the neighbor build the reference sums are of (-1: none)
 
   // what limits the step (their names: CAUSES in the .cpp)
   enum { CAUSE_MATERIAL, CAUSE_COMPRESSION, CAUSE_CONTACT, CAUSE_TRAVEL, CAUSE_CLOSING, NCAUSES };

@@ -967,16 +967,22 @@ void PairPD::note_stable_dt(double dt)
   bonds->note_stable_dt(dt);
 }
 
-void PairPD::stiffness_sums(double *current, double *reference, double *closing)
+void PairPD::current_stiffness_sums(double *current, double *closing)
 {
   const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) current[i] = reference[i] = closing[i] = 0.0;
+  for (int i = 0; i < nall; i++) current[i] = closing[i] = 0.0;
   bonds->copy_to_ghosts(atom->v[0], 3);    // LAMMPS sends ghosts no velocity by default
-  stable_dt_sum(reference);
   tangent_sum(current, closing);
-  bonds->sum_to_owners(reference);
   bonds->sum_to_owners(current);
   bonds->max_to_owners(closing);
+}
+
+void PairPD::reference_stiffness_sums(double *reference)
+{
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) reference[i] = 0.0;
+  stable_dt_sum(reference);
+  bonds->sum_to_owners(reference);
 }
 
 void PairPD::max_to_owners(double *a)

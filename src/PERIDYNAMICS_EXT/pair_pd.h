@@ -88,11 +88,12 @@ class PairPD : public Pair, public PDFamilySource {
   // the stable time step estimate of this run's setup (0 before it)
   double stable_dt() const { return dt_estimate; }
   // Each owned atom's stiffness sum with its ghosts' share added (fix
-  // pd/timestep; core/pd_tangent.h): 'current' from the bonds' tangents in
-  // the current configuration, 'reference' the setup estimate's (MS07 eq.
-  // 43); 'closing' the largest relative closing rate of its bonds (1/time).
-  // Arrays of atom->nmax.
-  void stiffness_sums(double *current, double *reference, double *closing);
+  // pd/timestep; core/pd_tangent.h), arrays of atom->nmax: from the bonds'
+  // tangents in the current configuration, with 'closing' the largest
+  // relative closing rate of its bonds (1/time); and as the setup estimate
+  // (MS07 eq. 43), which changes only when LAMMPS reneighbors.
+  void current_stiffness_sums(double *current, double *closing);
+  void reference_stiffness_sums(double *reference);
   // the ghosts' share of a per-atom sum (owned + ghost) onto their owners
   void sum_to_owners(double *a);
   void max_to_owners(double *a);    // the same, the largest of owner and ghosts

@@ -188,7 +188,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                  pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                  pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
                  pd_law_notes_fn notes, pd_law_note_fn note, int weighted, int tallied, int failing,
-              int directed)
+                 int directed)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int chunked = !tallied && !directed;
