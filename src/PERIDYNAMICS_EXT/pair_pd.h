@@ -233,7 +233,7 @@ class PairPD : public Pair, public PDFamilySource {
     Evaluation &operator=(const Evaluation &) = delete;
   };
   void begin_evaluation(Evaluation &e);
-  // the same for a pass that computes no force (pd_tangent_sums): the
+  // the same for a pass that computes no force (pd_tangent.h): the
   // bonds, and which broken bonds push
   void begin_pass(Evaluation &e);
   bool end_evaluation(Evaluation &e);

@@ -138,7 +138,7 @@ void PairPDBond::tangent_sum(double *sum, double *closing)
   Evaluation e;
   begin_pass(e);
   const pd_pmb_tangent ctx = {coef[PD_BOND_C][0], plastic ? bonds->history_data() : nullptr};
-  pd_tangent_sums(&e.L, atom->v[0], &ctx, pd_pmb_bond_tangent, sum, closing);
+  pd_pmb_tangent_sums(&e.L, atom->v[0], &ctx, sum, closing);
 }
 
 void PairPDBond::restart_settings(PDSettingsIO &io)

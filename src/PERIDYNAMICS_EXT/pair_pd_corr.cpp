@@ -444,7 +444,7 @@ void PairPDCorr::tangent_sum(double *sum, double *closing)
   const pd_state_tangent ctx = {order, stiffness_coefficients(), nullptr};
   Evaluation e;
   begin_pass(e);
-  pd_tangent_sums(&e.L, atom->v[0], &ctx, pd_state_bond_tangent, sum, closing);
+  pd_state_tangent_sums(&e.L, atom->v[0], &ctx, sum, closing);
 }
 
 void PairPDCorr::report_extra()

@@ -230,7 +230,7 @@ void PairPDOrdinary::tangent_sum(double *sum, double *closing)
   const pd_state_tangent ctx = {order, stiffness_coefficients(), state(F_AB)};
   Evaluation e;
   begin_pass(e);
-  pd_tangent_sums(&e.L, atom->v[0], &ctx, pd_state_bond_tangent, sum, closing);
+  pd_state_tangent_sums(&e.L, atom->v[0], &ctx, sum, closing);
 }
 
 bool PairPDOrdinary::linear_model(int t, pd_linear_kind &kind, pd_elastic &e) const

@@ -13,7 +13,7 @@
  * dt_true = 2 / sqrt(lambda_max(S)) (the largest positive eigenvalue;
  * under compression K also has negative ones: buckling). The estimate is
  * dt_est = min_i sqrt(2 rho / sum_i) (pd_stable_dt) with sum_i from
- * pd_tangent_sums; the bound says dt_est <= dt_true, and it should not be
+ * pd_<material>_tangent_sums; the bound says dt_est <= dt_true, and it should not be
  * much smaller. lambda_max comes from Lanczos with full
  * reorthogonalization (checked against a dense Jacobi solver on a small
  * system), stopped on the explicit residual of its Ritz pair. */
@@ -258,7 +258,7 @@ static double *scaled_stiffness(const lattice *l, const model *m, const double *
   return S;
 }
 
-/* min_i sqrt(2 rho / sum_i) over the sums of pd_tangent_sums; sum (may be
+/* min_i sqrt(2 rho / sum_i) over the sums of pd_<material>_tangent_sums; sum (may be
  * NULL) receives the sums. */
 static double estimate(const lattice *l, const model *m, const double *x, double rho,
                        double *sum_out)
@@ -276,14 +276,14 @@ static double estimate(const lattice *l, const model *m, const double *x, double
     for (int i = 0; i < n; i++) k[i] = dim / mw[i] * (2.0 * m->mu + dim * fabs(m->lambda));
     forces(l, m, x, f, ab);
     const pd_state_tangent t = {m->order, k, ab};
-    pd_tangent_sums(&L, NULL, &t, pd_state_bond_tangent, sum, NULL);
+    pd_state_tangent_sums(&L, NULL, &t, sum, NULL);
     free(mw);
     free(k);
     free(ab);
     free(f);
   } else {
     const pd_pmb_tangent t = {&m->c, NULL};
-    pd_tangent_sums(&L, NULL, &t, pd_pmb_bond_tangent, sum, NULL);
+    pd_pmb_tangent_sums(&L, NULL, &t, sum, NULL);
   }
   double dt = INFINITY;
   for (int i = 0; i < n; i++) dt = fmin(dt, pd_stable_dt(rho, sum[i]));

@@ -23,9 +23,6 @@
 #include "pd_bonds.h"
 #include "pd_loop.h"
 
-/* |C| of one bond in the current configuration (bd->len, bd->r0 set). */
-typedef double (*pd_tangent_fn)(const void *ctx, const pd_bond *bd);
-
 /* sum[i] += |C| V_j and sum[j] += |C| V_i over the bonds that act now
  * (intact ones, and broken ones while they push: pd_bond_inactive). The
  * caller zeroes sum over owned and ghost atoms and adds the ghosts' share
@@ -35,8 +32,12 @@ typedef double (*pd_tangent_fn)(const void *ctx, const pd_bond *bd);
  * length: max(0, -d|Y|/dt) / |Y| (1/time; the caller takes the ghosts'
  * largest onto their owners): the estimate linearizes about the current
  * lengths, so a step must not close a bond by much of its length. */
-void pd_tangent_sums(const pd_loop *L, const double *v, const void *ctx, pd_tangent_fn tangent,
-                     double *sum, double *closing);
+typedef struct pd_pmb_tangent pd_pmb_tangent;
+typedef struct pd_state_tangent pd_state_tangent;
+void pd_pmb_tangent_sums(const pd_loop *L, const double *v, const pd_pmb_tangent *mat, double *sum,
+                         double *closing);
+void pd_state_tangent_sums(const pd_loop *L, const double *v, const pd_state_tangent *mat,
+                           double *sum, double *closing);
 
 /* The relative closing rate of a pair d = x_j - x_i of length len at
  * velocities vi, vj: max(0, -d|Y|/dt) / |Y|. */
@@ -46,24 +47,22 @@ static inline double pd_closing_rate(const double d[3], double len, const double
   return rate > 0.0 && len > 0.0 ? rate / (len * len) : 0.0;
 }
 
-/* Bond-based (pd_pmb, MS07 eq. 14): t = c w s; ctx is a pd_pmb_tangent. */
-typedef struct pd_pmb_tangent {
+/* Bond-based (pd_pmb, MS07 eq. 14): t = c w s. */
+struct pd_pmb_tangent {
   const double *c;        /* micromodulus per type pair (pd_pmb.c) */
   const double *plastic;  /* per-bond plastic stretch (microplastic), or NULL */
-} pd_pmb_tangent;
-double pd_pmb_bond_tangent(const void *ctx, const pd_bond *bd);
+};
 
 /* State-based (pd_ordinary.h; pd/corr as its ordinary counterpart):
  * axial (k_i + k_j) w g^2 + |A_i + A_j + (B_i + B_j) eps| w |dg/d|Y||,
  * string |t| / |Y| with t = (A_i + A_j + (B_i + B_j) eps) w g. k per atom
  * (owned + ghost) is the reference coefficient of pd_ordinary_stiffness;
  * ab (A, B per atom as pd_ordinary_state.ab) may be NULL: no stress terms. */
-typedef struct pd_state_tangent {
+struct pd_state_tangent {
   double order;       /* Seth-Hill order m of the bond strain */
   const double *k;
   const double *ab;
-} pd_state_tangent;
-double pd_state_bond_tangent(const void *ctx, const pd_bond *bd);
+};
 
 /* Contact spring (pd_contact.h) of stiffness cs at distance dist, its
  * particles len apart: max(cs/dist, cs (dist - len)/(dist len)), per unit
