@@ -25,16 +25,16 @@ const pd_coef pd_bond_coefs[PD_BOND_NCOEFS] = {
 static inline double pmb_strain(void *mat, const pd_bond *bd)
 {
   (void) mat;
-  return (bd->len - bd->r0) / bd->r0;
+  return pd_bond_stretch(bd);
 }
 
-/* force c s w; energy 1/4 c s^2 |xi| w per partner volume at each end,
- * released whole when the bond breaks */
-static inline pd_bond_force pmb_bond(double c, double s, const pd_bond *bd)
+/* force c s w, given also as s / |Y| (sl); energy 1/4 c s^2 |xi| w per
+ * partner volume at each end, released whole when the bond breaks */
+static inline pd_bond_force pmb_bond(double c, double s, double sl, const pd_bond *bd)
 {
   const double t = c * s * bd->w;
   const double e = 0.25 * t * s * bd->r0;
-  const pd_bond_force bf = {t, e, e, e, e, {0.0, 0.0, 0.0}};
+  const pd_bond_force bf = {c * sl * bd->w, e, e, e, e, {0.0, 0.0, 0.0}};
   return bf;
 }
 
@@ -42,7 +42,9 @@ static inline pd_bond_force pmb_bond(double c, double s, const pd_bond *bd)
  * through the pd_pmb) */
 static inline pd_bond_force pmb_force(void *c, const pd_bond *bd, double s)
 {
-  return pmb_bond(((const double *) c)[bd->tij], s, bd);
+  /* s / |Y| = (|Y| - |xi|) q: no divide but the stretch's (an elastic
+   * evaluation needs s itself only for energies) */
+  return pmb_bond(((const double *) c)[bd->tij], s, (bd->len - bd->r0) * pd_bond_inverse(bd), bd);
 }
 
 PD_DEFINE_KERNELS(pmb, pmb_strain, pmb_force)
@@ -80,7 +82,7 @@ static inline pd_bond_force microplastic_force(void *ctx, const pd_bond *bd, dou
       mp->work_atom[bd->j] += 0.5 * wp * vi;
     }
   }
-  return pmb_bond(c, s - *sp, bd);
+  return pmb_bond(c, s - *sp, (s - *sp) * (bd->r0 * pd_bond_inverse(bd)), bd);
 }
 
 PD_DEFINE_KERNELS(microplastic, pmb_strain, microplastic_force)

@@ -4,7 +4,8 @@
  *   double strain(void *mat, const pd_bond *bd)
  *       the bond's strain (its sign decides whether a broken bond pushes);
  *   pd_bond_force force(void *mat, const pd_bond *bd, double eps)
- *       the force state and the energies of the bond (pd_bonds.h).
+ *       the force state (over the current length) and the energies of
+ *       the bond (pd_bonds.h).
  * pd_force_loop walks every bond once: decodes it (broken bonds, recontact),
  * asks the material, asks the failure law, applies the force to both ends
  * (half of it when the bond breaks now) and tallies energy and virial.
@@ -98,7 +99,7 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   }
   /* the force on i per V_i V_j */
   double fij[3];
-  const double tl = directed || bd->len <= 0.0 ? 0.0 : share * bf.t / bd->len;
+  const double tl = directed ? 0.0 : share * bf.tl;
   for (int c = 0; c < 3; c++) fij[c] = directed ? share * bf.v[c] : tl * bd->d[c];
   for (int c = 0; c < 3; c++) {
     fi[c] += vj * fij[c];
@@ -171,8 +172,7 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
       special |= breaks_now(fail, &bd, eps, &bf) | breaks_after(fail, &bd, eps);
       g[3 * PD_CHUNK + k] = notes(fail, &bd);
     }
-    const double tl = bd.len > 0.0 ? bf.t / bd.len : 0.0;
-    for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = tl * bd.d[c];
+    for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = bf.tl * bd.d[c];
   }
   return special;
 }
@@ -216,9 +216,12 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
         for (int k = 0; k < m; k++) {
           const int j = b->far[row + k0 + k];
           const double vj = vol[j];
+          /* one address for the three components (3 * j + c would be
+           * widened to a pointer offset once per component) */
+          double *restrict fj = f + 3 * (ptrdiff_t) j;
           for (int c = 0; c < 3; c++) {
             fi[c] += vj * g[c * PD_CHUNK + k];
-            f[3 * j + c] -= vi * g[c * PD_CHUNK + k];
+            fj[c] -= vi * g[c * PD_CHUNK + k];
           }
           if (failing) {
             bd.j = j;
@@ -393,9 +396,10 @@ pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd
         for (int k = 0; k < m; k++) {
           const int j = b->far[row + k0 + k];
           const double vj = vol[j];
+          double *restrict sj = sum + width * (ptrdiff_t) j;
           for (int c = 0; c < width; c++) {
             si[c] += tb[k * width + c] * vj;
-            sum[j * width + c] += tb[k * width + c] * vi;
+            sj[c] += tb[k * width + c] * vi;
           }
         }
         continue;

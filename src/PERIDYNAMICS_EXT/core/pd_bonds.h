@@ -31,9 +31,33 @@ typedef struct pd_bond {
   double d[3];     /* x_j - x_i (not set in reference walks) */
 } pd_bond;
 
+/* One reciprocal per bond, 1/(|xi| |Y|) (0 for a bond of zero length):
+ * 1/|xi| = |Y| q and 1/|Y| = |xi| q. Materials and failure laws that take
+ * the stretch and the force per length from it share its one divide (the
+ * compiler merges identical expressions): the vector divider is what
+ * bounds the bond loop. */
+PD_INLINE double pd_bond_inverse(const pd_bond *bd)
+{
+  return bd->len > 0.0 ? 1.0 / (bd->r0 * bd->len) : 0.0;
+}
+
+/* The stretch (|Y| - |xi|) / |xi| through pd_bond_inverse (-1 at zero
+ * length). */
+PD_INLINE double pd_bond_stretch(const pd_bond *bd)
+{
+  return bd->len > 0.0 ? (bd->len - bd->r0) * (bd->len * pd_bond_inverse(bd)) : -1.0;
+}
+
+/* A force state t per unit current length (0 at zero length). */
+PD_INLINE double pd_per_length(double t, const pd_bond *bd)
+{
+  return bd->len > 0.0 ? t / bd->len : 0.0;
+}
+
 /* What a material answers for one bond of strain eps. */
 typedef struct pd_bond_force {
-  double t;                    /* force state: f_i += V_j t e_ij, f_j -= V_i t e_ij */
+  double tl;                   /* force state over the current length, t / |Y|:
+                                  f_i += V_j tl Y, f_j -= V_i tl Y (Y = x_j - x_i) */
   double stored_i, stored_j;   /* energy density it stores at each end, per
                                   unit volume of the partner (tallied) */
   double release_i, release_j; /* what it releases at each end if it breaks now */

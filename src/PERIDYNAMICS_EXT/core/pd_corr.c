@@ -168,7 +168,7 @@ extended_force(const pd_corr_state *st, const pd_bond *bd, double eps, int kind,
 {
   pd_bond_force bf = {0};
   if (bd->broken) {
-    bf.t = contact_spring(st, bd, eps, kind);
+    bf.tl = pd_per_length(contact_spring(st, bd, eps, kind), bd);
     return bf;
   }
   if (!alive(st, bd, damaged)) return bf;
@@ -176,8 +176,9 @@ extended_force(const pd_corr_state *st, const pd_bond *bd, double eps, int kind,
   const double n[3] = {xi[0] / bd->r0, xi[1] / bd->r0, xi[2] / bd->r0};
   const double si = normal_component(st->tensor + 9 * bd->i, n);
   const double sj = normal_component(st->tensor + 9 * bd->j, n);
-  bf.t = bd->w * (si + sj) * pd_bond_strain_rate(kind, st->order, eps, bd);
-  if (st->stabilization > 0.0) bf.t += stabilizing_force(st, bd, xi);
+  double t = bd->w * (si + sj) * pd_bond_strain_rate(kind, st->order, eps, bd);
+  if (st->stabilization > 0.0) t += stabilizing_force(st, bd, xi);
+  bf.tl = pd_per_length(t, bd);
   /* the instantaneous bond energy d psi / d phi at each end ('fail energy') */
   bf.release_i = bd->w * eps * si;
   bf.release_j = bd->w * eps * sj;

@@ -25,7 +25,7 @@ static inline int pd_law_legacy_after(const pd_failure *f, const pd_bond *bd, do
 {
   (void) eps;
   const pd_law_legacy *p = (const pd_law_legacy *) f->params;
-  const double s = (bd->len - bd->r0) / bd->r0;
+  const double s = pd_bond_stretch(bd);
   const double lim = p->s0_atom[bd->i] < p->s0_atom[bd->j] ? p->s0_atom[bd->i] : p->s0_atom[bd->j];
   return s > lim;
 }
@@ -35,7 +35,7 @@ static inline double pd_law_legacy_notes(const pd_failure *f, const pd_bond *bd)
 {
   const pd_law_legacy *p = (const pd_law_legacy *) f->params;
   const int tij = bd->tij;
-  const double s = (bd->len - bd->r0) / bd->r0;
+  const double s = pd_bond_stretch(bd);
   return p->s00[tij] - p->alpha[tij] * s;
 }
 

@@ -14,7 +14,7 @@ static inline int pd_law_stretch_now(const pd_failure *f, const pd_bond *bd, dou
 {
   (void) eps, (void) bf;
   const pd_law_stretch *p = (const pd_law_stretch *) f->params;
-  return (bd->len - bd->r0) / bd->r0 > p->s0[bd->tij];
+  return pd_bond_stretch(bd) > p->s0[bd->tij];
 }
 
 static inline int pd_law_stretch_after(const pd_failure *f, const pd_bond *bd, double eps)

@@ -23,7 +23,7 @@ const pd_coef pd_ordinary_coefs[PD_ORD_NCOEFS] = {
                   .hi = 1.0, .value = 0.5},
 };
 
-/* t = (A_i + A_j + (B_i + B_j) eps) w d(eps)/d|Y|; stored B/2 w eps^2 and
+/* t = (A_i + A_j + (B_i + B_j) eps) w d(eps)/d|Y| (taken over |Y|); stored B/2 w eps^2 and
  * released w eps (A + B eps / 2) at each end, per partner volume */
 PD_INLINE pd_bond_force
 ordinary_bond(int kind, const pd_ordinary_state *st, const pd_bond *bd, double eps)
@@ -33,7 +33,8 @@ ordinary_bond(int kind, const pd_ordinary_state *st, const pd_bond *bd, double e
   const double aj = ab[2 * bd->j], bj = ab[2 * bd->j + 1];
   const double w = bd->w, we2 = 0.5 * w * eps * eps;
   pd_bond_force bf;
-  bf.t = (ai + aj + (bi + bj) * eps) * w * pd_bond_strain_rate(kind, st->order, eps, bd);
+  bf.tl = (ai + aj + (bi + bj) * eps) * w *
+          pd_bond_strain_rate_per_length(kind, st->order, eps, bd);
   bf.stored_i = we2 * bi;
   bf.stored_j = we2 * bj;
   bf.release_i = w * eps * (ai + 0.5 * bi * eps);

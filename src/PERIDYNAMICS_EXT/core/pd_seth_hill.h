@@ -21,8 +21,8 @@ static inline int pd_order_kind(double m)
 PD_INLINE double
 pd_bond_strain(int kind, double m, const pd_bond *bd)
 {
-  /* times 1/|xi| (not divided by |xi|): the force's strain rate is that
-   * same 1/|xi|, so a bond of pd/ordinary divides once less */
+  /* times 1/|xi|, a divide that need not wait for |Y| (through
+   * pd_bond_inverse, it would: the dilatation pass is then slower) */
   if (kind == PD_ORDER_HALF) return (bd->len - bd->r0) * (1.0 / bd->r0);
   if (kind == PD_ORDER_LOG) return log(bd->len / bd->r0);
   return expm1(2.0 * m * log(bd->len / bd->r0)) / (2.0 * m);
@@ -35,6 +35,17 @@ pd_bond_strain_rate(int kind, double m, double eps, const pd_bond *bd)
   if (kind == PD_ORDER_HALF) return 1.0 / bd->r0;
   if (kind == PD_ORDER_LOG) return 1.0 / bd->len;
   return (1.0 + 2.0 * m * eps) / bd->len;
+}
+
+/* The same over |Y| (0 at zero length): what turns a force state into
+ * the force per length; m = 1/2 takes no divide of its own. */
+PD_INLINE double
+pd_bond_strain_rate_per_length(int kind, double m, double eps, const pd_bond *bd)
+{
+  if (kind == PD_ORDER_HALF) return pd_bond_inverse(bd);
+  const double inv2 = bd->len > 0.0 ? 1.0 / (bd->len * bd->len) : 0.0;
+  if (kind == PD_ORDER_LOG) return inv2;
+  return (1.0 + 2.0 * m * eps) * inv2;
 }
 
 /* The same strain of a principal stretch squared (an eigenvalue c of C),
