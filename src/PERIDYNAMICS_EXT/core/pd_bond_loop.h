@@ -38,7 +38,7 @@ typedef int (*pd_breaks_now_fn)(const pd_failure *f, const pd_bond *bd, double e
                                 const pd_bond_force *bf);
 typedef int (*pd_breaks_after_fn)(const pd_failure *f, const pd_bond *bd, double eps);
 typedef double (*pd_law_notes_fn)(const pd_failure *f, const pd_bond *bd);
-typedef void (*pd_law_note_fn)(const pd_failure *f, const pd_bond *bd, double value);
+typedef void (*pd_law_note_fn)(const pd_failure *f, int atom, double value);
 
 /* Slot idx of atom bd->i's row: its far end, types, weight and reference
  * length (intact unless 'failing'; a reference walk, not 'current', takes
@@ -78,8 +78,8 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
               double *restrict f, double fi[3], pd_bond *bd, int idx, pd_break_sums *sums,
               pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-              pd_law_notes_fn notes, pd_law_note_fn note, int weighted, int tallied, int failing,
-              int directed)
+              pd_law_notes_fn notes, pd_law_note_fn note, double *row_note, int weighted,
+              int tallied, int failing, int directed)
 {
   pd_bond_load(bd, b, type, trow, x, xi, fail, idx, weighted, failing, 1);
   const double eps = strain(mat, bd);
@@ -122,7 +122,9 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
     }
   }
   if (failing && !bd->broken) {
-    note(fail, bd, notes(fail, bd));
+    const double value = notes(fail, bd);
+    note(fail, bd->j, value);
+    *row_note = value > *row_note ? value : *row_note;
     if (breaks_after(fail, bd, eps))
       pd_break_bond(fail, sums, bd, bf.release_i, bf.release_j, vi, vj, 0);
   }
@@ -204,6 +206,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
     bd.ti = type ? type[i] : 1;
     const int trow = bd.ti * ntypes;
     const double xi[3] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+    double row_note = -INFINITY;    /* the largest of the row's notes */
     for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
       const int m = n - k0 < PD_CHUNK ? n - k0 : PD_CHUNK;
       /* (one copy of the first pass for one atom type: no type loads) */
@@ -224,18 +227,20 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
             fj[c] -= vi * g[c * PD_CHUNK + k];
           }
           if (failing) {
-            bd.j = j;
-            note(fail, &bd, g[3 * PD_CHUNK + k]);
+            const double value = g[3 * PD_CHUNK + k];
+            note(fail, j, value);
+            row_note = value > row_note ? value : row_note;
           }
         }
         continue;
       }
       for (int k = 0; k < m; k++)
         pd_force_bond(b, type, trow, x, xi, vol, f, fi, &bd, row + k0 + k, &sums, tally, fail,
-                      mat, strain, force, breaks_now, breaks_after, notes, note, weighted,
-                      tallied, failing, directed);
+                      mat, strain, force, breaks_now, breaks_after, notes, note, &row_note,
+                      weighted, tallied, failing, directed);
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
+    if (failing) note(fail, i, row_note);
   }
   if (failing) pd_add_break_sums(fail, &sums);
 }

@@ -39,11 +39,13 @@ static inline double pd_law_legacy_notes(const pd_failure *f, const pd_bond *bd)
   return p->s00[tij] - p->alpha[tij] * s;
 }
 
-static inline void pd_law_legacy_note(const pd_failure *f, const pd_bond *bd, double cand)
+/* (a max without a branch: the candidates of an unstrained block differ
+ * by round-off, and a branch on them is a coin toss) */
+static inline void pd_law_legacy_note(const pd_failure *f, int atom, double cand)
 {
   const pd_law_legacy *p = (const pd_law_legacy *) f->params;
-  if (cand > p->s0_new[bd->i]) p->s0_new[bd->i] = cand;
-  if (cand > p->s0_new[bd->j]) p->s0_new[bd->j] = cand;
+  const double s0 = p->s0_new[atom];
+  p->s0_new[atom] = cand > s0 ? cand : s0;
 }
 
 #endif

@@ -7,7 +7,11 @@
  *   pd_law_<name>_notes what the law keeps of every intact bond that acted
  *                       (a number per bond, e.g. a candidate for its ends'
  *                       state), and
- *   pd_law_<name>_note  keeps it (its per-atom state; may do nothing).
+ *   pd_law_<name>_note  keeps it at one end (its per-atom state; may do
+ *                       nothing): the loop gives it each bond's value at
+ *                       the far end and, once per row, the row's largest
+ *                       at the owner, so a law's notes combine by their
+ *                       maximum (any order gives the same result).
  * _now, _after and _notes only answer (no side effects): the loop asks them
  * for a row's bonds ahead of their turn, in its vectorized pass, and again.
  * To add a law: write its header, add one line to the list below and its
