@@ -3,6 +3,7 @@
 #include "pd_influence.h"
 #include "pd_kinematics.h"
 #include "pd_macros.h"
+#include "pd_seth_hill.h"
 
 int main(void)
 {
@@ -44,5 +45,35 @@ int main(void)
   /* Legacy partial volume: 1 well inside, 1/2 at the horizon, 0 at delta + lc/2. */
   check_rel("legacy partial volume at the horizon", pd_partial_volume_legacy(1.0, 1.0, 0.2), 0.5, 1e-14);
   check_rel("legacy partial volume inside", pd_partial_volume_legacy(0.5, 1.0, 0.2), 1.0, 0);
+  /* The bond loop's one reciprocal per bond, q = 1/(|xi| |Y|): the stretch
+   * and the force per length taken from it agree with the direct quotients
+   * to a few ulps (tolerance 4e-16 relative: q and |Y| q round twice), for
+   * stretched, compressed and unstretched bonds. */
+  const double lens[] = {1.3, 0.7, 1.0 + 1e-9, 1.0};
+  for (int k = 0; k < 4; k++) {
+    pd_bond bd = {0};
+    bd.r0 = 0.37;
+    bd.len = lens[k] * bd.r0;
+    char what[96];
+    const double want = (bd.len - bd.r0) / bd.r0;
+    snprintf(what, sizeof what, "stretch through q at |Y|/|xi| = %.10g", lens[k]);
+    if (want == 0.0) check_true(what, pd_bond_stretch(&bd) == 0.0);
+    else check_rel(what, pd_bond_stretch(&bd), want, 4e-16 * fabs(1.0 / want));
+    snprintf(what, sizeof what, "m = 1/2 rate per length is 1/(|xi| |Y|) at %.10g", lens[k]);
+    check_rel(what, pd_bond_strain_rate_per_length(PD_ORDER_HALF, 0.5, want, &bd),
+              1.0 / (bd.r0 * bd.len), 0.0);
+    const double m = -1.0, eps = pd_bond_strain(PD_ORDER_ANY, m, &bd);
+    snprintf(what, sizeof what, "m = -1 rate per length x |Y| is the rate at %.10g", lens[k]);
+    check_rel(what, pd_bond_strain_rate_per_length(PD_ORDER_ANY, m, eps, &bd) * bd.len,
+              pd_bond_strain_rate(PD_ORDER_ANY, m, eps, &bd), 4e-16);
+  }
+  /* Coincident ends: no force (no direction), the stretch -1. */
+  pd_bond zero = {0};
+  zero.r0 = 0.37;
+  check_true("zero length: q = 0, stretch -1, no force per length for any order",
+             pd_bond_inverse(&zero) == 0.0 && pd_bond_stretch(&zero) == -1.0 &&
+                 pd_per_length(5.0, &zero) == 0.0 &&
+                 pd_bond_strain_rate_per_length(PD_ORDER_HALF, 0.5, -1.0, &zero) == 0.0 &&
+                 pd_bond_strain_rate_per_length(PD_ORDER_LOG, 0.0, 0.0, &zero) == 0.0);
   return check_summary();
 }
