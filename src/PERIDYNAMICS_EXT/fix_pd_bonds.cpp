@@ -490,6 +490,12 @@ void FixPDBonds::grow_rows(int n)
   memory->grow(far, nrows, maxpartner, "pd/bonds:far");
   if (use_weights) memory->grow(weight, nrows, maxpartner, "pd/bonds:weight");
   if (nhistory) memory->grow(history, nrows, maxpartner * nhistory, "pd/bonds:history");
+  const size_t slots = (size_t) nrows * maxpartner;
+  PDCompat::advise_huge_pages(partner[0], slots * sizeof(tagint));
+  PDCompat::advise_huge_pages(r0[0], slots * sizeof(double));
+  PDCompat::advise_huge_pages(far[0], slots * sizeof(int));
+  if (use_weights) PDCompat::advise_huge_pages(weight[0], slots * sizeof(double));
+  if (nhistory) PDCompat::advise_huge_pages(history[0], slots * nhistory * sizeof(double));
 }
 
 void FixPDBonds::copy_arrays(int i, int j, int)

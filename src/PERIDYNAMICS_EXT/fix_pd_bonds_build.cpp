@@ -214,7 +214,7 @@ void FixPDBonds::build_families()
       if (r > 0.0) reachsq[a * nt + b] = std::pow(r + Neighbourhood::margin(domain, r), 2);
     }
   std::vector<bigint> touching(nt * nt, 0);
-  int differs = 0, mylongest = 0;
+  int differs = 0, mylongest = 0, coincident = 0;
   {
     Neighbourhood near(lmp, longest_reach(spec));
     // count the candidates each atom would store (an upper bound of its
@@ -260,6 +260,7 @@ void FixPDBonds::build_families()
         npartner[i]++;
         partner[i][k] = tag[j];
         r0[i][k] = g.r;
+        coincident |= g.r <= 1e-12 * spec.horizon(type[i], type[i]);
         if (use_weights) weight[i][k] = spec.bond_weight(g);
         for (int h = 0; h < nhistory; h++) history[i][k * nhistory + h] = 0.0;
       }
@@ -272,10 +273,7 @@ void FixPDBonds::build_families()
   MPI_Allreduce(&mylongest, &longest, 1, MPI_INT, MPI_MAX, world);
   shorten_rows(MAX(longest, 1));
 
-  int coincident = 0, any_coincident;
-  for (int i = 0; i < nlocal; i++)
-    for (int k = 0; k < npartner[i]; k++)
-      if (r0[i][k] <= 1e-12 * spec.horizon(type[i], type[i])) coincident = 1;
+  int any_coincident;
   MPI_Allreduce(&coincident, &any_coincident, 1, MPI_INT, MPI_MAX, world);
   if (any_coincident)
     error->all(FLERR, "Fix pd/bonds: two atoms share a reference position (x0); peridynamic "

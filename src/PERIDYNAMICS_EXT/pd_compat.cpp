@@ -8,6 +8,11 @@
 #include "force.h"
 #include "pair_hybrid.h"
 
+#include <cstdint>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 using namespace LAMMPS_NS;
 
 namespace {
@@ -32,4 +37,17 @@ std::vector<Pair *> PDCompat::pair_styles(Force *force)
     found.push_back(force->pair);
   }
   return found;
+}
+
+void PDCompat::advise_huge_pages(void *data, size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  // only the whole 2 MB pages inside the array; advice is only advice, so
+  // a refusal (no THP in this kernel) changes nothing
+  const uintptr_t huge = 2u << 20, begin = ((uintptr_t) data + huge - 1) & ~(huge - 1);
+  const uintptr_t end = ((uintptr_t) data + bytes) & ~(huge - 1);
+  if (data && end > begin) madvise((void *) begin, end - begin, MADV_HUGEPAGE);
+#else
+  (void) data, (void) bytes;
+#endif
 }

@@ -37,6 +37,10 @@ cases = [
     ("volume never set (PERI's default is 1)",
      replace_exact(block(6), f"set group all volume {VOLUME}\n", "") + f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN,
      "is not larger than the particle spacing 1"),
+    ("two atoms at one reference position",
+     block(8) + f"create_atoms 1 single 2 2 2\nset group all density {DENSITY}\nset group all volume {VOLUME}\n"
+     f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN,
+     "two atoms share a reference position"),
     ("an atom with zero volume", DATA + f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN,
      "some atoms have zero volume"),
     ("atom style without volume",
