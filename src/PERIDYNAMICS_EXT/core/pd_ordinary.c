@@ -23,8 +23,9 @@ const pd_coef pd_ordinary_coefs[PD_ORD_NCOEFS] = {
                   .hi = 1.0, .value = 0.5},
 };
 
-/* t = (A_i + A_j + (B_i + B_j) eps) w d(eps)/d|Y| (taken over |Y|); stored B/2 w eps^2 and
- * released w eps (A + B eps / 2) at each end, per partner volume */
+/* t = (A_i + A_j + (B_i + B_j) eps) w d(eps)/d|Y|, answered over |Y|;
+ * stored B/2 w eps^2 and released w eps (A + B eps / 2) at each end, per
+ * partner volume */
 PD_INLINE pd_bond_force
 ordinary_bond(int kind, const pd_ordinary_state *st, const pd_bond *bd, double eps)
 {
