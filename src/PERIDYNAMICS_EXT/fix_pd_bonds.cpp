@@ -473,6 +473,15 @@ void FixPDBonds::grow_arrays(int nmax)
   grow_fields(nmax);
 }
 
+// A bond table grown to rows x cols, its data on huge pages where the OS
+// gives them (a table's first touch is much of a family build otherwise).
+template <typename T>
+static void grow_table(Memory *memory, T **&table, int rows, int cols, const char *name)
+{
+  memory->grow(table, rows, cols, name);
+  if (table) PDCompat::advise_huge_pages(table[0], (size_t) rows * cols * sizeof(T));
+}
+
 // The bond tables have rows for owned atoms only: ghosts never own bonds
 // here, and the kernels walk owned rows. A row is written only where an
 // owned atom gets bonds: the build (rows 0 .. nlocal-1), an atom arriving
@@ -485,17 +494,11 @@ void FixPDBonds::grow_rows(int n)
   if (n <= nrows) return;
   if (nrows > 0) n = MAX(n, nrows + nrows / 8 + 64);
   nrows = n;
-  memory->grow(partner, nrows, maxpartner, "pd/bonds:partner");
-  memory->grow(r0, nrows, maxpartner, "pd/bonds:r0");
-  memory->grow(far, nrows, maxpartner, "pd/bonds:far");
-  if (use_weights) memory->grow(weight, nrows, maxpartner, "pd/bonds:weight");
-  if (nhistory) memory->grow(history, nrows, maxpartner * nhistory, "pd/bonds:history");
-  const size_t slots = (size_t) nrows * maxpartner;
-  PDCompat::advise_huge_pages(partner[0], slots * sizeof(tagint));
-  PDCompat::advise_huge_pages(r0[0], slots * sizeof(double));
-  PDCompat::advise_huge_pages(far[0], slots * sizeof(int));
-  if (use_weights) PDCompat::advise_huge_pages(weight[0], slots * sizeof(double));
-  if (nhistory) PDCompat::advise_huge_pages(history[0], slots * nhistory * sizeof(double));
+  grow_table(memory, partner, nrows, maxpartner, "pd/bonds:partner");
+  grow_table(memory, r0, nrows, maxpartner, "pd/bonds:r0");
+  grow_table(memory, far, nrows, maxpartner, "pd/bonds:far");
+  if (use_weights) grow_table(memory, weight, nrows, maxpartner, "pd/bonds:weight");
+  if (nhistory) grow_table(memory, history, nrows, maxpartner * nhistory, "pd/bonds:history");
 }
 
 void FixPDBonds::copy_arrays(int i, int j, int)

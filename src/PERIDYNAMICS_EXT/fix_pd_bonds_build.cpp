@@ -249,6 +249,7 @@ void FixPDBonds::build_families()
       built_tag[i] = tag[i];
       const int ncand = near.gather(i);
       const double *rsq = &reachsq[type[i] * nt];
+      const double coincident_length = 1e-12 * spec.horizon(type[i], type[i]);
       for (int c = 0; c < ncand; c++) {
         const int j = near.atom(c);
         if (!(near.d2(c) <= rsq[type[j]]) || !candidate(i, j)) continue;
@@ -260,7 +261,7 @@ void FixPDBonds::build_families()
         npartner[i]++;
         partner[i][k] = tag[j];
         r0[i][k] = g.r;
-        coincident |= g.r <= 1e-12 * spec.horizon(type[i], type[i]);
+        coincident |= g.r <= coincident_length;
         if (use_weights) weight[i][k] = spec.bond_weight(g);
         for (int h = 0; h < nhistory; h++) history[i][k * nhistory + h] = 0.0;
       }
