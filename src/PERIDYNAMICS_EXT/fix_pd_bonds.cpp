@@ -21,10 +21,39 @@
 #include "update.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+
+// A bond table: rows of cols slots with row pointers, its data on memory
+// that may get huge pages (PDCompat::huge_alloc: the first touch of a
+// table was much of a family build otherwise).
+template <typename T>
+static void destroy_table(T **&table)
+{
+  if (table) {
+    std::free(table[0]);
+    std::free(table);
+  }
+  table = nullptr;
+}
+
+// A new table of rows x cols; the first 'keep' rows copied from the old
+// one (the same cols), which is freed.
+template <typename T>
+static void grow_table(Error *error, T **&table, int keep, int rows, int cols, const char *name)
+{
+  const size_t bytes = (size_t) rows * cols * sizeof(T);
+  T *data = static_cast<T *>(PDCompat::huge_alloc(bytes));
+  T **row = static_cast<T **>(std::malloc((size_t) rows * sizeof(T *)));
+  if (!data || !row) error->one(FLERR, "Fix pd/bonds: out of memory for the {} table ({} bytes)", name, bytes);
+  for (int i = 0; i < rows; i++) row[i] = data + (size_t) i * cols;
+  if (table && keep > 0) std::memcpy(data, table[0], (size_t) keep * cols * sizeof(T));
+  destroy_table(table);
+  table = row;
+}
 
 // The global restart record and its version: pd_bonds_record.h, written
 // and read in fix_pd_bonds_restart.cpp. The version covers the per-atom
@@ -80,11 +109,11 @@ FixPDBonds::~FixPDBonds()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(npartner);
-  memory->destroy(partner);
-  memory->destroy(r0);
-  memory->destroy(weight);
-  memory->destroy(history);
-  memory->destroy(far);
+  destroy_table(partner);
+  destroy_table(r0);
+  destroy_table(weight);
+  destroy_table(history);
+  destroy_table(far);
   memory->destroy(built_tag);
   for (Field &f : fields) memory->destroy(f.data);
 }
@@ -237,9 +266,12 @@ void FixPDBonds::report_bonds_by_type(const std::vector<bigint> &touching_mine)
 
 // Local indices of the far ends: the image closest to the owner, valid until
 // the next reneighboring (atoms move less than half the skin meanwhile).
+// 'built': the family build has just stored each far end (the one image
+// within reach of the owner in the reference configuration: the closest
+// one unless atoms moved by half a box since), so only the checks run.
 // A partner beyond the ghost cutoff is lost even when this rank happens to
 // own it, so that the same bonds are lost on any number of ranks.
-void FixPDBonds::map_partners(bool setup)
+void FixPDBonds::map_partners(bool setup, bool built)
 {
   if (setup) check_stored_partners();
   nowned = atom->nlocal;
@@ -258,9 +290,9 @@ void FixPDBonds::map_partners(bool setup)
   bigint nambiguous = 0;
   for (int i = 0; i < nowned; i++) {
     for (int k = 0; k < npartner[i]; k++) {
-      int j = atom->map(partner[i][k]);
+      int j = built ? far[i][k] : atom->map(partner[i][k]);
       if (j >= nall) j = -1;    // a stale map entry of a deleted atom
-      if (j >= 0) j = domain->closest_image(i, j);
+      if (j >= 0 && !built) j = domain->closest_image(i, j);
       if (j >= 0) {
         const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
         const double len2 = dx * dx + dy * dy + dz * dz;
@@ -473,15 +505,6 @@ void FixPDBonds::grow_arrays(int nmax)
   grow_fields(nmax);
 }
 
-// A bond table grown to rows x cols, its data on huge pages where the OS
-// gives them (a table's first touch is much of a family build otherwise).
-template <typename T>
-static void grow_table(Memory *memory, T **&table, int rows, int cols, const char *name)
-{
-  memory->grow(table, rows, cols, name);
-  if (table) PDCompat::advise_huge_pages(table[0], (size_t) rows * cols * sizeof(T));
-}
-
 // The bond tables have rows for owned atoms only: ghosts never own bonds
 // here, and the kernels walk owned rows. A row is written only where an
 // owned atom gets bonds: the build (rows 0 .. nlocal-1), an atom arriving
@@ -493,12 +516,13 @@ void FixPDBonds::grow_rows(int n)
 {
   if (n <= nrows) return;
   if (nrows > 0) n = MAX(n, nrows + nrows / 8 + 64);
+  const int keep = nrows;
   nrows = n;
-  grow_table(memory, partner, nrows, maxpartner, "pd/bonds:partner");
-  grow_table(memory, r0, nrows, maxpartner, "pd/bonds:r0");
-  grow_table(memory, far, nrows, maxpartner, "pd/bonds:far");
-  if (use_weights) grow_table(memory, weight, nrows, maxpartner, "pd/bonds:weight");
-  if (nhistory) grow_table(memory, history, nrows, maxpartner * nhistory, "pd/bonds:history");
+  grow_table(error, partner, keep, nrows, maxpartner, "partner");
+  grow_table(error, r0, keep, nrows, maxpartner, "reference length");
+  grow_table(error, far, keep, nrows, maxpartner, "far end");
+  if (use_weights) grow_table(error, weight, keep, nrows, maxpartner, "weight");
+  if (nhistory) grow_table(error, history, keep, nrows, maxpartner * nhistory, "history");
 }
 
 void FixPDBonds::copy_arrays(int i, int j, int)
@@ -605,34 +629,37 @@ void FixPDBonds::resize_tables(int rowlength)
 {
   maxpartner = rowlength;
   maxexchange = per_atom_max(PDField::MIGRATE);
-  memory->destroy(partner);
-  memory->destroy(r0);
-  memory->destroy(weight);
-  memory->destroy(history);
-  memory->destroy(far);
+  destroy_table(partner);
+  destroy_table(r0);
+  destroy_table(weight);
+  destroy_table(history);
+  destroy_table(far);
   nrows = 0;
   grow_rows(atom->nlocal + 1);
 }
 
 // Shorter rows for the bond tables, keeping the first 'rowlength' slots
-// of each: rows move forward in place, then the memory is given back.
+// of each: rows move forward in place. The slack at the end stays with
+// the table until it is freed (a new, smaller table would fault in its
+// pages again and, for a moment, double the tables' memory).
 template <typename T>
-static void shorten(Memory *memory, T **&table, int nrows, int from, int to, const char *name)
+static void shorten(T **table, int nrows, int from, int to)
 {
   if (!table || to >= from) return;
-  for (int i = 1; i < nrows; i++) memmove(table[0] + (size_t) i * to, table[i], to * sizeof(T));
-  memory->grow(table, nrows, to, name);
+  for (int i = 1; i < nrows; i++) {
+    memmove(table[0] + (size_t) i * to, table[i], to * sizeof(T));
+    table[i] = table[0] + (size_t) i * to;
+  }
 }
 
 void FixPDBonds::shorten_rows(int rowlength)
 {
   if (rowlength >= maxpartner) return;
-  shorten(memory, partner, nrows, maxpartner, rowlength, "pd/bonds:partner");
-  shorten(memory, r0, nrows, maxpartner, rowlength, "pd/bonds:r0");
-  shorten(memory, far, nrows, maxpartner, rowlength, "pd/bonds:far");
-  if (use_weights) shorten(memory, weight, nrows, maxpartner, rowlength, "pd/bonds:weight");
-  if (nhistory)
-    shorten(memory, history, nrows, maxpartner * nhistory, rowlength * nhistory, "pd/bonds:history");
+  shorten(partner, nrows, maxpartner, rowlength);
+  shorten(r0, nrows, maxpartner, rowlength);
+  shorten(far, nrows, maxpartner, rowlength);
+  if (use_weights) shorten(weight, nrows, maxpartner, rowlength);
+  if (nhistory) shorten(history, nrows, maxpartner * nhistory, rowlength * nhistory);
   maxpartner = rowlength;
   maxexchange = per_atom_max(PDField::MIGRATE);
 }

@@ -172,7 +172,7 @@ class FixPDBonds : public Fix {
 
   void take_family_spec();
   void build_families();
-  void map_partners(bool setup);
+  void map_partners(bool setup, bool built = false);
   void check_stored_partners();
   bigint count_lost(bigint stored, bigint intact);
   void warn_ambiguous_images(bigint mine);

@@ -260,6 +260,7 @@ void FixPDBonds::build_families()
         }
         npartner[i]++;
         partner[i][k] = tag[j];
+        far[i][k] = j;
         r0[i][k] = g.r;
         coincident |= g.r <= coincident_length;
         if (use_weights) weight[i][k] = spec.bond_weight(g);
@@ -280,7 +281,7 @@ void FixPDBonds::build_families()
     error->all(FLERR, "Fix pd/bonds: two atoms share a reference position (x0); peridynamic "
                "bonds need distinct positions");
   built = 1;
-  map_partners(true);
+  map_partners(true, true);
   reference_sums();
   // cracks of a restart file written before the first run (their fixes
   // need not exist any more); this run's pd/precrack fixes cut for themselves

@@ -8,7 +8,7 @@
 #include "force.h"
 #include "pair_hybrid.h"
 
-#include <cstdint>
+#include <cstdlib>
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
@@ -39,15 +39,16 @@ std::vector<Pair *> PDCompat::pair_styles(Force *force)
   return found;
 }
 
-void PDCompat::advise_huge_pages(void *data, size_t bytes)
+void *PDCompat::huge_alloc(size_t bytes)
 {
+  constexpr size_t huge = 2u << 20;
+  void *data = nullptr;
+  if (bytes < huge / 2) return posix_memalign(&data, 64, bytes ? bytes : 1) ? nullptr : data;
+  // whole 2 MB pages: the last one too (untouched slack costs no memory)
+  const size_t rounded = (bytes + huge - 1) / huge * huge;
+  if (posix_memalign(&data, huge, rounded)) return nullptr;
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  // only the whole 2 MB pages inside the array; advice is only advice, so
-  // a refusal (no THP in this kernel) changes nothing
-  const uintptr_t huge = 2u << 20, begin = ((uintptr_t) data + huge - 1) & ~(huge - 1);
-  const uintptr_t end = ((uintptr_t) data + bytes) & ~(huge - 1);
-  if (data && end > begin) madvise((void *) begin, end - begin, MADV_HUGEPAGE);
-#else
-  (void) data, (void) bytes;
+  madvise(data, rounded, MADV_HUGEPAGE);    // only advice: a refusal changes nothing
 #endif
+  return data;
 }

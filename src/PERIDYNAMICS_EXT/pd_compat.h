@@ -118,11 +118,14 @@ namespace PDCompat {
    * which alone includes pair_hybrid.h). */
   std::vector<Pair *> pair_styles(Force *force);
 
-  /* Ask the OS to back a large array with huge pages where it can (Linux
-   * with transparent huge pages in 'madvise' mode; a no-op elsewhere):
-   * the first touch of a bond table then faults in 2 MB at a time, not
-   * 4 kB, which in a virtual machine is much of a family build's time. */
-  void advise_huge_pages(void *data, size_t bytes);
+  /* Memory for a large array that the OS may back with huge pages (Linux
+   * with transparent huge pages in 'madvise' mode): from 1 MB on it is
+   * aligned to and rounded up to 2 MB pages and advised, so that its first
+   * touch faults in 2 MB at a time, not 4 kB. A virtual machine's page
+   * faults are slow (about 13 us per 4 kB page measured on the test
+   * machines): most of a small family build was the first touch of its
+   * bond tables. Null on failure; free with std::free. */
+  void *huge_alloc(size_t bytes);
 
 }    // namespace PDCompat
 }    // namespace LAMMPS_NS
