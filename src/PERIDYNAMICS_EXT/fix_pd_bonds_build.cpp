@@ -7,8 +7,9 @@
    image of their current position, and each owned atom looks at the atoms
    of the cells within reach of it. Two passes over the same candidates,
    one that counts (the tables are rectangular: their row length is the
-   longest family over all ranks) and one that fills; the cells are freed
-   before the bonds are mapped.
+   longest family over all ranks) and one that fills, storing each far
+   end as the image it found; the cells are freed before the far ends are
+   checked (map_partners).
 
    Which candidates become bonds, and what they store, is decided exactly
    as before the cells existed: the minimum image of x0_j - x0_i, the
@@ -40,13 +41,30 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-// Which end stores a bond: the smaller tag when the tags' sum is even, the
-// larger when odd. Either rule stores each bond once; alternating keeps the
-// per-atom tables (padded to the longest row) about half full rather than
-// giving the first atom of a periodic lattice every one of its bonds.
-inline bool owns_bond(tagint me, tagint other)
+// The reference bond vector x0_j - x0_i, minimum image. From j it is
+// exactly the negative: a difference and the image's period shifts are
+// exact under negation.
+inline void reference_bond(Domain *domain, double **x0, int i, int j, double xi[3])
 {
-  return ((me + other) & 1) ? me > other : me < other;
+  const double *half = domain->prd_half;
+  for (int c = 0; c < 3; c++) xi[c] = x0[j][c] - x0[i][c];
+  // (minimum_image changes only a component longer than half the box)
+  if (fabs(xi[0]) > half[0] || fabs(xi[1]) > half[1] || fabs(xi[2]) > half[2])
+    PDCompat::minimum_image(domain, xi);
+}
+
+// Which end stores a bond: the one from which its reference vector points
+// up (z > 0; on a plane of z, y > 0; on a line, x > 0); for coincident
+// atoms (refused later) the smaller tag. Exactly one end, since the other
+// sees -xi. Every atom of a lattice then stores the same number of bonds
+// (the tables are padded to the longest row), and they reach the atoms
+// after it in LAMMPS's order (create_atoms and atom sorting number atoms
+// along z last): the force loop's far ends are the next planes only.
+inline bool owns_bond(const double xi[3], tagint me, tagint other)
+{
+  for (int c = 2; c >= 0; c--)
+    if (xi[c] != 0.0) return xi[c] > 0.0;
+  return me < other;
 }
 
 // Cells of a third of the reach: a query scans about 2.3 times the atoms
@@ -88,7 +106,9 @@ std::vector<double> reference_images(Atom *atom, Domain *domain)
 // (and a little farther: round-off; the caller's tests are exact).
 class Neighbourhood {
  public:
-  Neighbourhood(LAMMPS *lmp, double reach) : cut(reach + margin(lmp->domain, reach))
+  Neighbourhood(LAMMPS *lmp, double reach) :
+      domain(lmp->domain), x0(lmp->atom->x0), flat(lmp->domain->dimension == 2),
+      tie(margin(lmp->domain, reach)), cut(reach + tie)
   {
     Atom *atom = lmp->atom;
     const int nall = atom->nlocal + atom->nghost;
@@ -123,7 +143,9 @@ class Neighbourhood {
 
   // The atoms j near owned atom i that i would store (owns_bond), in the
   // order of the cells: atom(c) and its squared distance (reference
-  // images) d2(c) for c below the count returned.
+  // images) d2(c) for c below the count returned. The reference images'
+  // z (2D: y) decides who stores a bond unless it is within round-off of
+  // zero: then the exact reference vector does.
   int gather(int i)
   {
     const int me = slot[i];
@@ -144,10 +166,18 @@ class Neighbourhood {
         const double *o = bins.pos + 3 * (size_t) s;
         const double dx = o[0] - p[0], dy = o[1] - p[1], dz = o[2] - p[2];
         const double d2 = dx * dx + dy * dy + dz * dz;
-        // (written always, kept if near and stored here: no branch)
-        js[n] = bins.index[s];
+        // (written always, kept if near and stored here)
+        const int j = bins.index[s];
+        js[n] = j;
         d2s[n] = d2;
-        n += d2 <= cutsq && owns_bond(mytag, tags[s]);
+        const double up = flat ? dy : dz;
+        if (!(d2 <= cutsq) || up < -tie) continue;
+        if (up <= tie) {
+          double xi[3];
+          reference_bond(domain, x0, i, j, xi);
+          if (!owns_bond(xi, mytag, tags[s])) continue;
+        }
+        n++;
       }
     return n;
   }
@@ -155,8 +185,12 @@ class Neighbourhood {
   double d2(int c) const { return d2s[c]; }
 
  private:
-  pd_cell_bins bins;
+  Domain *domain;
+  double **x0;
+  bool flat;     // 2D: every z is 0
+  double tie;    // the round-off of the reference images' differences
   double cut;
+  pd_cell_bins bins;
   std::vector<int> runs;    // pairs: begin, end of a run of sorted atoms
   std::vector<int> slot;    // an owned atom's place among the sorted atoms
   std::vector<tagint> tags; // the sorted atoms' tags
@@ -191,12 +225,7 @@ void FixPDBonds::build_families()
   const double *vol = atom->vfrac, *half = domain->prd_half;
   PDBondGeometry g;
   auto candidate = [&](int i, int j) {
-    g.xi[0] = x0[j][0] - x0[i][0];
-    g.xi[1] = x0[j][1] - x0[i][1];
-    g.xi[2] = x0[j][2] - x0[i][2];
-    // (minimum_image changes only a component longer than half the box)
-    if (fabs(g.xi[0]) > half[0] || fabs(g.xi[1]) > half[1] || fabs(g.xi[2]) > half[2])
-      PDCompat::minimum_image(domain, g.xi);
+    reference_bond(domain, x0, i, j, g.xi);
     g.r = sqrt(g.xi[0] * g.xi[0] + g.xi[1] * g.xi[1] + g.xi[2] * g.xi[2]);
     g.vi = vol[i];
     g.vj = vol[j];

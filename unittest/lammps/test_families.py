@@ -11,10 +11,13 @@ at most the horizon. Each atom's bond count (family_volume / volume, both
 ends) must equal the brute-force count, atom by atom, in
   - an orthogonal box, periodic in x and y, fixed in z, 2 ranks,
   - a tilted box (xy, xz, yz), periodic, 3 ranks.
+The rows of the bond tables are as long as the most bonds one atom
+stores, each bond at the end from which it points up (brute force too).
 Partial quadrature with two types (horizons 3 and 4 spacings) has no
-simple brute force: its bond count, longest row, per-type line and the
-histogram of bonds per atom are the values of the neighbor-list build
-that preceded the cell build (29 Sep 2021 LAMMPS, commit 5dcf657)."""
+simple brute force: its bond count, per-type line and the histogram of
+bonds per atom are the values of the neighbor-list build that preceded
+the cell build (29 Sep 2021 LAMMPS, commit 5dcf657); which end stores a
+bond has changed since, and with it the longest row."""
 import random
 import re
 from collections import Counter
@@ -69,9 +72,19 @@ def minimum_image(dx, dy, dz, n, periodic, tilt):
     return dx, dy, dz
 
 
+def stored_at_first(dx, dy, dz):
+    """Whether a bond is stored at the end it points away from: its
+    reference vector points up (z, then y, then x; fix pd/bonds doc)."""
+    for c in (dz, dy, dx):
+        if c != 0.0:
+            return c > 0.0
+    raise ValueError("coincident atoms")
+
+
 def brute_force(sites, n, periodic, tilt):
-    """Bonds of each atom (by ID) over all pairs."""
+    """Bonds of each atom (by ID) over all pairs, and how many each stores."""
     count = [0] * (len(sites) + 1)
+    stored = [0] * (len(sites) + 1)
     h2 = HORIZON * HORIZON
     for a in range(len(sites)):
         xa, ya, za = sites[a]
@@ -81,7 +94,8 @@ def brute_force(sites, n, periodic, tilt):
             if dx * dx + dy * dy + dz * dz <= h2:
                 count[a + 1] += 1
                 count[b + 1] += 1
-    return count
+                stored[a + 1 if stored_at_first(dx, dy, dz) else b + 1] += 1
+    return count, stored
 
 
 MOVE = (f"displace_atoms all move {2.6 * A!r} {-0.4 * A!r} 0.0 units box\n"
@@ -107,7 +121,7 @@ for tag, n, boundary, ranks, tilt in [("orthogonal", 12, "p p f", 2, (0.0, 0.0, 
                                       ("tilted", 10, "p p p", 3, (2.5, -1.5, 1.0))]:
     sites = lattice(n, seed=17 + n, tilt=tilt)
     out, got = families(tag, sites, n, boundary, ranks, tilt)
-    want = brute_force(sites, n, [c == "p" for c in boundary.split()], tilt)
+    want, stored = brute_force(sites, n, [c == "p" for c in boundary.split()], tilt)
     wrong = [k for k in got if abs(got[k] - want[k]) > 1e-9]
     check(f"{tag} box, {ranks} ranks: every atom has the bonds of the brute-force search",
           not wrong, f"{len(wrong)} of {len(got)} atoms differ" + (
@@ -115,9 +129,26 @@ for tag, n, boundary, ranks, tilt in [("orthogonal", 12, "p p f", 2, (0.0, 0.0, 
     total = log_value(out, r"pd/bonds: (\d+) bonds, ")
     check(f"{tag} box: the logged bond count is the brute-force count", total == sum(want) / 2,
           f"{total:.0f} logged, {sum(want) // 2} brute force")
+    longest = log_value(out, r"up to (\d+) owned per atom")
+    check(f"{tag} box: the rows are as long as the most bonds an atom stores (the end a bond points "
+          "away from, upwards)", longest == max(stored), f"{longest:.0f} logged, {max(stored)} brute force")
     hist = Counter(round(v) for v in got.values())
     print(f"  {tag}: bonds per atom (count: atoms) {dict(sorted(hist.items()))}")
     check(f"{tag} box: jitter gives a spread of family sizes (the test sees irregular families)", len(hist) > 5)
+
+# perfect lattices: bonds on a plane of z (2D: a line of y) are ties that
+# the exact reference vector decides, so every atom stores half its family
+for dim, deck, plane, modulus in [(3, block(8), "", "K 14.9e9"),
+                                  (2, plate(12), " plane stress thickness 1e-3", "E 72e9")]:
+    r = HORIZON / SPACING
+    span = range(-3, 4)
+    family = sum(1 for i in span for j in span for k in (span if dim == 3 else [0])
+                 if 0 < i * i + j * j + k * k <= r * r)
+    out, _ = run(deck + f"pair_style pd/bond quadrature point{plane}\npair_coeff * * pmb {modulus} horizon {HORIZON}\n"
+                 "run 0\n", d, ranks=2)
+    per_atom, longest = log_value(out, r"([\d.]+) bonds per atom \("), log_value(out, r"up to (\d+) owned per atom")
+    check(f"{dim}D lattice, 2 ranks: every atom stores half of its {family} bonds", per_atom == family
+          and longest == family // 2, f"{per_atom:.2f} bonds per atom, up to {longest:.0f} stored per atom")
 
 # partial quadrature, two types: the values of the neighbor-list build
 sites = lattice(12, seed=29)
@@ -128,11 +159,11 @@ out, got = families("partial", sites, 12, "p p f", 2, types=lambda x: 1 if x < 6
 # per-atom bond counts c_id: sum c, sum id c, sum c^2 (exact integers)
 counts = {k: round(v) for k, v in got.items()}
 fingerprint = (sum(counts.values()), sum(k * c for k, c in counts.items()), sum(c * c for c in counts.values()))
-OLD = {"bonds": 283842, "longest": 238, "fingerprint": (567684, 490992501, 199246792),
+OLD = {"bonds": 283842, "fingerprint": (567684, 490992501, 199246792),
        "types": "pd/bonds: bonds per atom by type: type 1 268.39; type 2 388.65; bonds between types: 1-2 101004;"}
-total, longest = log_value(out, r"pd/bonds: (\d+) bonds, "), log_value(out, r"up to (\d+) owned per atom")
-check("partial quadrature, 2 types: bonds as the neighbor-list build made them",
-      total == OLD["bonds"] and longest == OLD["longest"], f"{total:.0f} bonds, up to {longest:.0f} per row")
+total = log_value(out, r"pd/bonds: (\d+) bonds, ")
+check("partial quadrature, 2 types: bonds as the neighbor-list build made them", total == OLD["bonds"],
+      f"{total:.0f} bonds")
 types = re.search(r"pd/bonds: bonds per atom by type:.*", out)
 check("partial quadrature, 2 types: bonds per atom by type as before", types and types.group(0) == OLD["types"],
       types.group(0) if types else "no line")
