@@ -21,39 +21,10 @@
 #include "update.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
-
-// A bond table: rows of cols slots with row pointers, its data on memory
-// that may get huge pages (PDCompat::huge_alloc: the first touch of a
-// table was much of a family build otherwise).
-template <typename T>
-static void destroy_table(T **&table)
-{
-  if (table) {
-    std::free(table[0]);
-    std::free(table);
-  }
-  table = nullptr;
-}
-
-// A new table of rows x cols; the first 'keep' rows copied from the old
-// one (the same cols), which is freed.
-template <typename T>
-static void grow_table(Error *error, T **&table, int keep, int rows, int cols, const char *name)
-{
-  const size_t bytes = (size_t) rows * cols * sizeof(T);
-  T *data = static_cast<T *>(PDCompat::huge_alloc(bytes));
-  T **row = static_cast<T **>(std::malloc((size_t) rows * sizeof(T *)));
-  if (!data || !row) error->one(FLERR, "Fix pd/bonds: out of memory for the {} table ({} bytes)", name, bytes);
-  for (int i = 0; i < rows; i++) row[i] = data + (size_t) i * cols;
-  if (table && keep > 0) std::memcpy(data, table[0], (size_t) keep * cols * sizeof(T));
-  destroy_table(table);
-  table = row;
-}
 
 // The global restart record and its version: pd_bonds_record.h, written
 // and read in fix_pd_bonds_restart.cpp. The version covers the per-atom
@@ -109,11 +80,11 @@ FixPDBonds::~FixPDBonds()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(npartner);
-  destroy_table(partner);
-  destroy_table(r0);
-  destroy_table(weight);
-  destroy_table(history);
-  destroy_table(far);
+  memory->destroy(partner);
+  memory->destroy(r0);
+  memory->destroy(weight);
+  memory->destroy(history);
+  memory->destroy(far);
   memory->destroy(built_tag);
   for (Field &f : fields) memory->destroy(f.data);
 }
@@ -516,13 +487,12 @@ void FixPDBonds::grow_rows(int n)
 {
   if (n <= nrows) return;
   if (nrows > 0) n = MAX(n, nrows + nrows / 8 + 64);
-  const int keep = nrows;
   nrows = n;
-  grow_table(error, partner, keep, nrows, maxpartner, "partner");
-  grow_table(error, r0, keep, nrows, maxpartner, "reference length");
-  grow_table(error, far, keep, nrows, maxpartner, "far end");
-  if (use_weights) grow_table(error, weight, keep, nrows, maxpartner, "weight");
-  if (nhistory) grow_table(error, history, keep, nrows, maxpartner * nhistory, "history");
+  memory->grow(partner, nrows, maxpartner, "pd/bonds:partner");
+  memory->grow(r0, nrows, maxpartner, "pd/bonds:r0");
+  memory->grow(far, nrows, maxpartner, "pd/bonds:far");
+  if (use_weights) memory->grow(weight, nrows, maxpartner, "pd/bonds:weight");
+  if (nhistory) memory->grow(history, nrows, maxpartner * nhistory, "pd/bonds:history");
 }
 
 void FixPDBonds::copy_arrays(int i, int j, int)
@@ -629,37 +599,34 @@ void FixPDBonds::resize_tables(int rowlength)
 {
   maxpartner = rowlength;
   maxexchange = per_atom_max(PDField::MIGRATE);
-  destroy_table(partner);
-  destroy_table(r0);
-  destroy_table(weight);
-  destroy_table(history);
-  destroy_table(far);
+  memory->destroy(partner);
+  memory->destroy(r0);
+  memory->destroy(weight);
+  memory->destroy(history);
+  memory->destroy(far);
   nrows = 0;
   grow_rows(atom->nlocal + 1);
 }
 
 // Shorter rows for the bond tables, keeping the first 'rowlength' slots
-// of each: rows move forward in place. The slack at the end stays with
-// the table until it is freed (a new, smaller table would fault in its
-// pages again and, for a moment, double the tables' memory).
+// of each: rows move forward in place, then the memory is given back.
 template <typename T>
-static void shorten(T **table, int nrows, int from, int to)
+static void shorten(Memory *memory, T **&table, int nrows, int from, int to, const char *name)
 {
   if (!table || to >= from) return;
-  for (int i = 1; i < nrows; i++) {
-    memmove(table[0] + (size_t) i * to, table[i], to * sizeof(T));
-    table[i] = table[0] + (size_t) i * to;
-  }
+  for (int i = 1; i < nrows; i++) memmove(table[0] + (size_t) i * to, table[i], to * sizeof(T));
+  memory->grow(table, nrows, to, name);
 }
 
 void FixPDBonds::shorten_rows(int rowlength)
 {
   if (rowlength >= maxpartner) return;
-  shorten(partner, nrows, maxpartner, rowlength);
-  shorten(r0, nrows, maxpartner, rowlength);
-  shorten(far, nrows, maxpartner, rowlength);
-  if (use_weights) shorten(weight, nrows, maxpartner, rowlength);
-  if (nhistory) shorten(history, nrows, maxpartner * nhistory, rowlength * nhistory);
+  shorten(memory, partner, nrows, maxpartner, rowlength, "pd/bonds:partner");
+  shorten(memory, r0, nrows, maxpartner, rowlength, "pd/bonds:r0");
+  shorten(memory, far, nrows, maxpartner, rowlength, "pd/bonds:far");
+  if (use_weights) shorten(memory, weight, nrows, maxpartner, rowlength, "pd/bonds:weight");
+  if (nhistory)
+    shorten(memory, history, nrows, maxpartner * nhistory, rowlength * nhistory, "pd/bonds:history");
   maxpartner = rowlength;
   maxexchange = per_atom_max(PDField::MIGRATE);
 }

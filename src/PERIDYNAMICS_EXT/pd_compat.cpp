@@ -8,11 +8,6 @@
 #include "force.h"
 #include "pair_hybrid.h"
 
-#include <cstdlib>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 using namespace LAMMPS_NS;
 
 namespace {
@@ -37,18 +32,4 @@ std::vector<Pair *> PDCompat::pair_styles(Force *force)
     found.push_back(force->pair);
   }
   return found;
-}
-
-void *PDCompat::huge_alloc(size_t bytes)
-{
-  constexpr size_t huge = 2u << 20;
-  void *data = nullptr;
-  if (bytes < huge / 2) return posix_memalign(&data, 64, bytes ? bytes : 1) ? nullptr : data;
-  // whole 2 MB pages: the last one too (untouched slack costs no memory)
-  const size_t rounded = (bytes + huge - 1) / huge * huge;
-  if (posix_memalign(&data, huge, rounded)) return nullptr;
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  madvise(data, rounded, MADV_HUGEPAGE);    // only advice: a refusal changes nothing
-#endif
-  return data;
 }

@@ -118,15 +118,6 @@ namespace PDCompat {
    * which alone includes pair_hybrid.h). */
   std::vector<Pair *> pair_styles(Force *force);
 
-  /* Memory for a large array that the OS may back with huge pages (Linux
-   * with transparent huge pages in 'madvise' mode): from 1 MB on it is
-   * aligned to and rounded up to 2 MB pages and advised, so that its first
-   * touch faults in 2 MB at a time, not 4 kB. A virtual machine's page
-   * faults are slow (about 13 us per 4 kB page measured on the test
-   * machines): most of a small family build was the first touch of its
-   * bond tables. Null on failure; free with std::free. */
-  void *huge_alloc(size_t bytes);
-
 }    // namespace PDCompat
 }    // namespace LAMMPS_NS
 
