@@ -222,7 +222,7 @@ void FixPDBonds::build_families()
   // a candidate becomes a bond if the family spec says so (its reference
   // distance within the horizon, or with partial volumes a share of its
   // cell inside it). g: the candidate's geometry, for its weight.
-  const double *vol = atom->vfrac, *half = domain->prd_half;
+  const double *vol = atom->vfrac;
   PDBondGeometry g;
   auto candidate = [&](int i, int j) {
     reference_bond(domain, x0, i, j, g.xi);
