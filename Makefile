@@ -52,7 +52,7 @@ demo: build
 	./examples/impact-demo/run.sh $(LMP)
 
 # The benchmark block's tables (1-3 minutes); FULL=1 adds the size sweep,
-# family build, memory per bond and 2 ranks (5-12 minutes). bench/README.md
+# family build, memory per bond and 2 ranks (5-13 minutes). bench/README.md
 bench: build
 	FULL=$(FULL) ./bench/run.sh $(LMP)
 
