@@ -442,7 +442,8 @@ def print_mpi(rows):
     print(f"same steps): T1 / ({MPI_RANKS} T{MPI_RANKS}) of each pair's wall-clock Loop times; the median pair shown")
     busy = False
     for style, pairs in rows:
-        effs = sorted((one["loop"] / (MPI_RANKS * two["loop"]), one, two) for one, two in pairs)
+        effs = sorted(((one["loop"] / (MPI_RANKS * two["loop"]), one, two) for one, two in pairs),
+                      key=lambda e: e[0])
         eff, one, two = effs[len(effs) // 2]
         busy |= any(min(a["cpu"], b["cpu"]) < BUSY_CPU for a, b in pairs)
         print(f"  {style:12s} T1 {one['loop']:7.3f} s ({one['cpu']:5.1f}% CPU)  "
