@@ -114,7 +114,7 @@ class LawEnergy : public PDFailureLaw {
     }
     for (int i = 0; i < atom->nlocal; i++) crit[i] = beta[atom->type[i]] * m->family_norm(i);
     if (neighbor->ago == 0) bonds()->copy_to_ghosts(crit);
-    params = {crit, gc.data()};
+    params = {crit, pd_failure_floor(crit, atom->nlocal + atom->nghost), gc.data()};
     return &params;
   }
 

@@ -66,7 +66,7 @@ class LawLegacy : public PDFailureLaw {
     }
     const int nall = atom->nlocal + atom->nghost;
     for (int i = 0; i < nall; i++) s0_new[i] = -INFINITY;
-    params = {table(S00), table(ALPHA), atom->s0, s0_new};
+    params = {table(S00), table(ALPHA), atom->s0, pd_failure_floor(atom->s0, nall), s0_new};
     return &params;
   }
 

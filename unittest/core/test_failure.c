@@ -7,6 +7,7 @@
 #include "pd_bond_based.h"
 #include "pd_failure.h"
 #include "pd_law_energy.h"
+#include "pd_law_legacy.h"
 #include "pd_law_stretch.h"
 #include "pd_macros.h"
 #include "pd_params.h"
@@ -142,6 +143,46 @@ int main(void)
               0.5 * c * sb * sb * h * 2e-9 * 3e-9, 1e-9);
     l.natoms = 8;
     lattice_free(&l);
+  }
+  /* The laws' screens (pd_law_<name>_ahead, the vectorized pass's only
+   * question): yes whenever the exact tests say yes, and no for some bonds
+   * (else they screen nothing). Random atoms' s0 and crit, stretches and
+   * energies around the thresholds. */
+  {
+    enum { NATOM = 16, NBOND = 20000 };
+    double s0_atom[NATOM], crit[NATOM], s0_new[NATOM];
+    srand(7);
+    for (int a = 0; a < NATOM; a++) {
+      s0_atom[a] = 0.004 + 0.002 * rand() / RAND_MAX;
+      crit[a] = 1.0 + rand() / (double) RAND_MAX;
+    }
+    const double s00[4] = {0, 0, 0, 0.005}, alpha[4] = {0, 0, 0, 0.25}, gc[4] = {0, 0, 0, 2.0};
+    const pd_law_legacy legacy = {s00, alpha, s0_atom, pd_failure_floor(s0_atom, NATOM), s0_new};
+    const pd_law_energy energy = {crit, pd_failure_floor(crit, NATOM), gc};
+    const pd_failure fl = {.law = PD_FAIL_LEGACY, .params = &legacy}, fe = {.law = PD_FAIL_ENERGY, .params = &energy};
+    int missed = 0, screened_legacy = 0, screened_energy = 0;
+    for (int k = 0; k < NBOND; k++) {
+      pd_bond bd = {0};
+      bd.i = rand() % NATOM;
+      bd.j = rand() % NATOM;
+      bd.tij = 3;
+      bd.w = 0.5 + rand() / (double) RAND_MAX;
+      bd.r0 = 1.0;
+      bd.len = 1.0 + 0.008 * rand() / RAND_MAX - 0.001;
+      const double eps = pd_bond_stretch(&bd), e = 4.0 * rand() / RAND_MAX;
+      const pd_bond_force bf = {0.0, 0.0, 0.0, e, 0.5 * e, {0.0, 0.0, 0.0}};
+      missed += (pd_law_legacy_now(&fl, &bd, eps, &bf) | pd_law_legacy_after(&fl, &bd, eps)) &&
+                !pd_law_legacy_ahead(&fl, &bd, eps, &bf);
+      missed += (pd_law_energy_now(&fe, &bd, eps, &bf) | pd_law_energy_after(&fe, &bd, eps)) &&
+                !pd_law_energy_ahead(&fe, &bd, eps, &bf);
+      screened_legacy += !pd_law_legacy_ahead(&fl, &bd, eps, &bf);
+      screened_energy += !pd_law_energy_ahead(&fe, &bd, eps, &bf);
+    }
+    check_true("screens: no bond that breaks is screened out (PERI's rule, energy law)", missed == 0);
+    check_true("screens: PERI's rule's screens out a bond below every atom's s0",
+               screened_legacy > 0 && screened_legacy < NBOND);
+    check_true("screens: the energy law's screens out a bond below every pair's threshold",
+               screened_energy > 0 && screened_energy < NBOND);
   }
   /* Pre-crack geometry. */
   {

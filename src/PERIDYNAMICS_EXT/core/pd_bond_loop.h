@@ -37,6 +37,8 @@ typedef pd_bond_force (*pd_force_fn)(void *mat, const pd_bond *bd, double eps);
 typedef int (*pd_breaks_now_fn)(const pd_failure *f, const pd_bond *bd, double eps,
                                 const pd_bond_force *bf);
 typedef int (*pd_breaks_after_fn)(const pd_failure *f, const pd_bond *bd, double eps);
+typedef int (*pd_may_break_fn)(const pd_failure *f, const pd_bond *bd, double eps,
+                               const pd_bond_force *bf);
 typedef double (*pd_law_notes_fn)(const pd_failure *f, const pd_bond *bd);
 typedef void (*pd_law_note_fn)(const pd_failure *f, int atom, double value);
 
@@ -153,14 +155,14 @@ pd_bond_load_ahead(pd_bond *bd, const pd_bond_view *restrict b, const int *restr
  * and, for the failure law's note, what it notes (at 3 * PD_CHUNK + k). No
  * store that another bond could read, so the compiler vectorizes it (the
  * far ends' positions gathered). Returns nonzero if a bond is broken or
- * breaks now or after (the laws' questions have no side effects): the
- * caller then takes the chunk bond by bond instead. */
+ * might break now or after (the law's screen, _ahead): the caller then
+ * takes the chunk bond by bond instead. */
 PD_INLINE int
 pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int trow, int ti,
                const double *restrict x, const double xi[3], int i, int row, int m,
                double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
-               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-               pd_law_notes_fn notes, int weighted, int failing)
+               pd_force_fn force, pd_may_break_fn may_break, pd_law_notes_fn notes, int weighted,
+               int failing)
 {
   int special = 0;
   for (int k = 0; k < m; k++) {
@@ -171,7 +173,7 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
     const double eps = strain(mat, &bd);
     const pd_bond_force bf = force(mat, &bd, eps);
     if (failing) {
-      special |= breaks_now(fail, &bd, eps, &bf) | breaks_after(fail, &bd, eps);
+      special |= may_break(fail, &bd, eps, &bf);
       g[3 * PD_CHUNK + k] = notes(fail, &bd);
     }
     for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = bf.tl * bd.d[c];
@@ -189,8 +191,8 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                  const double *restrict x, const double *restrict vol, double *restrict f,
                  pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                  pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-                 pd_law_notes_fn notes, pd_law_note_fn note, int weighted, int tallied, int failing,
-                 int directed)
+                 pd_may_break_fn may_break, pd_law_notes_fn notes, pd_law_note_fn note, int weighted,
+                 int tallied, int failing, int directed)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int chunked = !tallied && !directed;
@@ -212,10 +214,9 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       /* (one copy of the first pass for one atom type: no type loads) */
       if (chunked &&
           !(type ? pd_force_chunk(b, type, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, breaks_now, breaks_after, notes, weighted, failing)
+                                  strain, force, may_break, notes, weighted, failing)
                  : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, breaks_now, breaks_after, notes, weighted,
-                                  failing))) {
+                                  strain, force, may_break, notes, weighted, failing))) {
         for (int k = 0; k < m; k++) {
           const int j = b->far[row + k0 + k];
           const double vj = vol[j];
@@ -247,12 +248,13 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
 
 PD_INLINE void
 pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn force,
-              pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after, pd_law_notes_fn notes,
-              pd_law_note_fn note, int weighted, int tallied, int failing, int directed)
+              pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
+              pd_may_break_fn may_break, pd_law_notes_fn notes, pd_law_note_fn note, int weighted,
+              int tallied, int failing, int directed)
 {
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->tally, L->fail, mat, strain,
-                   force, breaks_now, breaks_after, notes, note, weighted, tallied, failing,
-                   directed);
+                   force, breaks_now, breaks_after, may_break, notes, note, weighted, tallied,
+                   failing, directed);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */
@@ -262,8 +264,8 @@ typedef void (*pd_kernel)(const pd_loop *L, void *mat);
   static void prefix##_##law##_##failing##weighted##tallied(const pd_loop *L, void *mat) \
   {                                                                                       \
     pd_force_loop(L, mat, strain, force, pd_law_##law##_now, pd_law_##law##_after,        \
-                  pd_law_##law##_notes, pd_law_##law##_note, weighted, tallied, failing,  \
-                  directed);                                                              \
+                  pd_law_##law##_ahead, pd_law_##law##_notes, pd_law_##law##_note,        \
+                  weighted, tallied, failing, directed);                                  \
   }
 #define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing, directed) \
   PD_KERNEL_(prefix, strain, force, law, failing, 0, 0, directed)             \

@@ -1,6 +1,14 @@
 #include "pd_failure.h"
 
+#include <math.h>
 #include <stdlib.h>
+
+double pd_failure_floor(const double *value, int n)
+{
+  double floor = INFINITY;
+  for (int i = 0; i < n; i++) floor = value[i] < floor ? value[i] : floor;
+  return floor;
+}
 
 int pd_failure_note_fresh(pd_failure *f, int idx)
 {

@@ -42,6 +42,10 @@ typedef struct pd_failure {
 /* Append idx to f->fresh, growing it (0 when out of memory). */
 int pd_failure_note_fresh(pd_failure *f, int idx);
 
+/* The smallest of n per-atom values (+inf for none; NaNs skipped): a law's
+ * floor for its screen, pd_law_<name>_ahead (pd_laws.h). */
+double pd_failure_floor(const double *value, int n);
+
 /* The reference length a bond acts with, and whether it is broken. A
  * broken bond pushes only once its two particles touch, as MS07's
  * short-range force: its reference length becomes the contact distance

@@ -11,6 +11,7 @@
 
 typedef struct pd_law_energy {
   const double *crit;  /* per atom beta N for G_c = 1 (owned + ghost) */
+  double crit_floor;   /* the smallest of them */
   const double *gc;    /* per type pair G_c (+inf: the pair does not fail) */
 } pd_law_energy;
 
@@ -22,6 +23,17 @@ static inline int pd_law_energy_now(const pd_failure *f, const pd_bond *bd, doub
   return (eps > 0.0) &
       ((bf->release_i + bf->release_j) * bd->r0 * bd->r0 >=
        bd->w * (p->crit[bd->i] + p->crit[bd->j]) * p->gc[bd->tij]);
+}
+
+/* _now with the far end's crit at its floor: no per-atom load but the
+ * owner's (the same in a whole row) */
+static inline int pd_law_energy_ahead(const pd_failure *f, const pd_bond *bd, double eps,
+                                      const pd_bond_force *bf)
+{
+  const pd_law_energy *p = (const pd_law_energy *) f->params;
+  return (eps > 0.0) &
+      ((bf->release_i + bf->release_j) * bd->r0 * bd->r0 >=
+       bd->w * (p->crit[bd->i] + p->crit_floor) * p->gc[bd->tij]);
 }
 
 static inline int pd_law_energy_after(const pd_failure *f, const pd_bond *bd, double eps)

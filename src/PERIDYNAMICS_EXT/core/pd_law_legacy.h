@@ -10,6 +10,7 @@ typedef struct pd_law_legacy {
   const double *s00;      /* per type pair */
   const double *alpha;    /* per type pair */
   const double *s0_atom;  /* per atom s0 of the previous step (owned + ghost) */
+  double s0_floor;        /* the smallest of them */
   double *s0_new;         /* per atom new s0: a max over both ends, -inf where
                              no intact bond was seen (owned + ghost) */
 } pd_law_legacy;
@@ -28,6 +29,15 @@ static inline int pd_law_legacy_after(const pd_failure *f, const pd_bond *bd, do
   const double s = pd_bond_stretch(bd);
   const double lim = p->s0_atom[bd->i] < p->s0_atom[bd->j] ? p->s0_atom[bd->i] : p->s0_atom[bd->j];
   return s > lim;
+}
+
+/* _after against the smallest s0 of all atoms: no per-atom load */
+static inline int pd_law_legacy_ahead(const pd_failure *f, const pd_bond *bd, double eps,
+                                      const pd_bond_force *bf)
+{
+  (void) eps, (void) bf;
+  const pd_law_legacy *p = (const pd_law_legacy *) f->params;
+  return pd_bond_stretch(bd) > p->s0_floor;
 }
 
 /* every intact bond that acted: the candidate s0 of both ends */

@@ -18,6 +18,13 @@ static inline int pd_law_none_after(const pd_failure *f, const pd_bond *bd, doub
   return 0;
 }
 
+static inline int pd_law_none_ahead(const pd_failure *f, const pd_bond *bd, double eps,
+                                    const pd_bond_force *bf)
+{
+  (void) f, (void) bd, (void) eps, (void) bf;
+  return 0;
+}
+
 static inline double pd_law_none_notes(const pd_failure *f, const pd_bond *bd)
 {
   (void) f, (void) bd;

@@ -1,9 +1,15 @@
 /* The failure laws, registered here once. Each law lives in its own
- * header (pd_law_<name>.h): its parameters, the two questions the bond
- * loop asks it and what it notes (pd_bond_loop.h):
+ * header (pd_law_<name>.h): its parameters, the questions the bond loop
+ * asks it and what it notes (pd_bond_loop.h):
  *   pd_law_<name>_now   does an intact bond break in this evaluation,
  *                       before its force acts (it then acts with half)?
  *   pd_law_<name>_after does it break after its force acted?
+ *   pd_law_<name>_ahead might it break now or after? Yes whenever _now or
+ *                       _after would (it may say yes when neither does):
+ *                       the vectorized pass asks only this cheap screen,
+ *                       without the exact tests' per-atom loads, and a yes
+ *                       takes the bond's chunk bond by bond, where _now and
+ *                       _after decide;
  *   pd_law_<name>_notes what the law keeps of every intact bond that acted
  *                       (a number per bond, e.g. a candidate for its ends'
  *                       state), and
@@ -12,14 +18,15 @@
  *                       the far end and, once per row, the row's largest
  *                       at the owner, so a law's notes combine by their
  *                       maximum (any order gives the same result).
- * _now, _after and _notes only answer (no side effects): the loop asks them
- * for a row's bonds ahead of their turn, in its vectorized pass, and again.
+ * _now, _after, _ahead and _notes only answer (no side effects): the loop
+ * asks _ahead and _notes for a row's bonds ahead of their turn, in its
+ * vectorized pass, and _now, _after and _notes again bond by bond.
  * To add a law: write its header, add one line to the list below and its
  * #include to pd_law_hooks.h. */
 #ifndef PD_LAWS_H
 #define PD_LAWS_H
 
-/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_notes/_note. */
+/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_ahead/_notes/_note. */
 #define PD_FAILURE_LAWS(X, ...)          \
   X(NONE, none, __VA_ARGS__)             \
   X(STRETCH, stretch, __VA_ARGS__)       \
