@@ -15,25 +15,30 @@ typedef struct pd_law_energy {
   const double *gc;    /* per type pair G_c (+inf: the pair does not fail) */
 } pd_law_energy;
 
+/* The test with the far end's crit given: in tension, the released
+ * energies reach the threshold. '&', not '&&': no branch, so the bond
+ * loop's first pass vectorizes. */
+static inline int pd_law_energy_reached(const pd_law_energy *p, const pd_bond *bd, double eps,
+                                        const pd_bond_force *bf, double crit_far)
+{
+  return (eps > 0.0) & ((bf->release_i + bf->release_j) * bd->r0 * bd->r0 >=
+                        bd->w * (p->crit[bd->i] + crit_far) * p->gc[bd->tij]);
+}
+
 static inline int pd_law_energy_now(const pd_failure *f, const pd_bond *bd, double eps,
                                     const pd_bond_force *bf)
 {
   const pd_law_energy *p = (const pd_law_energy *) f->params;
-  /* '&', not '&&': no branch, so the bond loop's first pass vectorizes */
-  return (eps > 0.0) &
-      ((bf->release_i + bf->release_j) * bd->r0 * bd->r0 >=
-       bd->w * (p->crit[bd->i] + p->crit[bd->j]) * p->gc[bd->tij]);
+  return pd_law_energy_reached(p, bd, eps, bf, p->crit[bd->j]);
 }
 
-/* _now with the far end's crit at its floor: no per-atom load but the
- * owner's (the same in a whole row) */
+/* with the far end's crit at its floor: no per-atom load but the owner's
+ * (the same in a whole row) */
 static inline int pd_law_energy_ahead(const pd_failure *f, const pd_bond *bd, double eps,
                                       const pd_bond_force *bf)
 {
   const pd_law_energy *p = (const pd_law_energy *) f->params;
-  return (eps > 0.0) &
-      ((bf->release_i + bf->release_j) * bd->r0 * bd->r0 >=
-       bd->w * (p->crit[bd->i] + p->crit_floor) * p->gc[bd->tij]);
+  return pd_law_energy_reached(p, bd, eps, bf, p->crit_floor);
 }
 
 static inline int pd_law_energy_after(const pd_failure *f, const pd_bond *bd, double eps)
