@@ -174,7 +174,8 @@ void ComputePDAtom::dilatation(double *out)
   pd_ordinary_state st = {0.5, out, nullptr, nullptr};
   pd_failure intact_only = {};    // broken bonds stretch freely: they do not count
   intact_only.recontact = 0;
-  const pd_loop L = {&v, atom->type, atom->ntypes + 1, atom->x[0], atom->vfrac, nullptr, nullptr, &intact_only};
+  const pd_loop L = {&v, atom->type, atom->ntypes + 1, atom->x[0], atom->vfrac, nullptr, nullptr, &intact_only,
+                     nullptr, 0};
   pd_ordinary_dilatation(&L, &st);
   bonds->sum_to_owners(out);
   for (int i = 0; i < atom->nlocal; i++) {

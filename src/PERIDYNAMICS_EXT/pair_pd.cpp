@@ -47,7 +47,8 @@ PairPD::PairPD(LAMMPS *lmp, const pd_coef *material_coefs, int ncoefs) :
     Pair(lmp), decl(material_coefs, material_coefs + ncoefs), nmaterial(ncoefs), ifail(ncoefs),
     coef(nullptr), legacy(0), recontact(RECONTACT_NEAR), quadrature(QUADRATURE_POINT), cell_beyond(0.0), law(nullptr), model_dim(PD_3D),
     thickness(0.0), lattice_spacing(0.0), bonds(nullptr), report_pending(0), timed_since(-1.0), work(nullptr), nwork(0),
-    released(nullptr), fresh(nullptr), maxfresh(0), nreleased(0), dt_estimate(0.0), radius(nullptr),
+    released(nullptr), fresh(nullptr), maxfresh(0), nreleased(0), dt_estimate(0.0),
+    reaction(nullptr), nreaction(0), radius(nullptr),
     nradius(0), radius_step(-1)
 {
   // the columns: the material's, the law of each pair, then every law's
@@ -82,6 +83,7 @@ PairPD::~PairPD()
   }
   memory->destroy(work);
   memory->destroy(released);
+  memory->destroy(reaction);
   free(fresh);
   memory->destroy(radius);
 }
@@ -775,7 +777,8 @@ void PairPD::begin_evaluation(Evaluation &e)
   // one type: the kernels load none
   const int *type = atom->ntypes == 1 ? nullptr : atom->type;
   e.L = {&e.view, type, atom->ntypes + 1, atom->x[0], atom->vfrac, atom->f[0],
-         evflag ? &e.tally : nullptr, e.fails ? &e.fail : nullptr};
+         evflag ? &e.tally : nullptr, e.fails ? &e.fail : nullptr, reactions(),
+         atom->nlocal + atom->nghost};
 }
 
 void PairPD::begin_pass(Evaluation &e)
@@ -786,7 +789,7 @@ void PairPD::begin_pass(Evaluation &e)
   e.fail = e.fails ? recontact_state() : pd_failure{};
   const int *type = atom->ntypes == 1 ? nullptr : atom->type;
   e.L = {&e.view, type, atom->ntypes + 1, atom->x[0], atom->vfrac, nullptr, nullptr,
-         e.fails ? &e.fail : nullptr};
+         e.fails ? &e.fail : nullptr, nullptr, 0};
 }
 
 bool PairPD::end_evaluation(Evaluation &e)
@@ -829,6 +832,17 @@ const double *PairPD::contact_radii()
     radius_step = neighbor->ncalls;
   }
   return radius;
+}
+
+// The force loop's scratch (pd_loop.reaction): 4 doubles per atom, owned + ghost.
+double *PairPD::reactions()
+{
+  if (atom->nmax > nreaction) {
+    nreaction = atom->nmax;
+    memory->destroy(reaction);
+    memory->create(reaction, 4 * (bigint) nreaction, "pair:reaction");
+  }
+  return reaction;
 }
 
 // The per-atom energy one evaluation dissipates (owned + ghost), zeroed.

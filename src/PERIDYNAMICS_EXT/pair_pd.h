@@ -249,6 +249,9 @@ class PairPD : public Pair, public PDFamilySource {
   int maxfresh;
   int nreleased;
   double dt_estimate;
+  double *reaction;         // the force loop's scratch (pd_loop.reaction)
+  int nreaction;
+  double *reactions();
   double *radius;           // per-atom contact radius (owned + ghost)
   int nradius;
   bigint radius_step;       // the reneighboring it was computed for

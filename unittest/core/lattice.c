@@ -29,6 +29,7 @@ lattice lattice_make(int dim, int n, double h, double delta, int kind)
   l.far = malloc(sizeof(int) * (size_t) l.stride * l.natoms);
   l.len0 = malloc(sizeof(double) * (size_t) l.stride * l.natoms);
   l.weight = kind >= 0 ? malloc(sizeof(double) * (size_t) l.stride * l.natoms) : NULL;
+  l.reaction = calloc(4 * (size_t) l.natoms, sizeof(double));
   for (int p = 0; p < l.natoms; p++)
     for (int q = p + 1; q < l.natoms; q++) {
       const double dx = l.x0[3 * q] - l.x0[3 * p], dy = l.x0[3 * q + 1] - l.x0[3 * p + 1],
@@ -52,6 +53,7 @@ void lattice_free(lattice *l)
   free(l->far);
   free(l->len0);
   free(l->weight);
+  free(l->reaction);
 }
 
 pd_bond_view lattice_view(const lattice *l)

@@ -13,6 +13,7 @@ typedef struct lattice {
   int *type;
   int *count, *far;
   double *len0, *weight;
+  double *reaction;   /* the force loop's scratch (pd_loop.reaction): 4 per atom, zero */
 } lattice;
 
 /* n^3 points (n^2 when dim == 2, z = 0) with spacing h; bonds within delta,

@@ -20,7 +20,10 @@
  * and a scalar one that adds them onto the far ends. Rows with a broken
  * or breaking bond, steps that tally and directed materials go bond by
  * bond. Both ways do the same arithmetic in the same order, so the
- * results are the same to the bit (lammps.kernels). */
+ * results are the same to the bit (lammps.kernels). The far ends' sums
+ * go into a scratch of 4 doubles per atom (pd_loop.reaction), added onto
+ * f at the end: a bond's reaction is then one 4-wide add instead of three
+ * scalar ones (pd/bond 1.13x, pd/ordinary 1.06x at 32^3). */
 #ifndef PD_BOND_LOOP_H
 #define PD_BOND_LOOP_H
 
@@ -31,6 +34,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 typedef double (*pd_strain_fn)(void *mat, const pd_bond *bd);
 typedef pd_bond_force (*pd_force_fn)(void *mat, const pd_bond *bd, double eps);
@@ -41,6 +45,28 @@ typedef int (*pd_may_break_fn)(const pd_failure *f, const pd_bond *bd, double ep
                                const pd_bond_force *bf);
 typedef double (*pd_law_notes_fn)(const pd_failure *f, const pd_bond *bd);
 typedef void (*pd_law_note_fn)(const pd_failure *f, int atom, double value);
+
+/* acc[0..3] += s (a0, a1, a2, 0): one 4-wide add where the compiler has
+ * vector types (GCC, clang), otherwise three; the same arithmetic, lane by
+ * lane, either way. acc: 4 doubles, any alignment. */
+#if defined(__GNUC__) || defined(__clang__)
+typedef double pd_v4 __attribute__((vector_size(32)));
+PD_INLINE void pd_add4(double *restrict acc, double s, double a0, double a1, double a2)
+{
+  const pd_v4 a = {a0, a1, a2, 0.0};
+  pd_v4 sum;
+  memcpy(&sum, acc, sizeof sum);
+  sum += s * a;
+  memcpy(acc, &sum, sizeof sum);
+}
+#else
+PD_INLINE void pd_add4(double *restrict acc, double s, double a0, double a1, double a2)
+{
+  acc[0] += s * a0;
+  acc[1] += s * a1;
+  acc[2] += s * a2;
+}
+#endif
 
 /* Slot idx of atom bd->i's row: its far end, types, weight and reference
  * length (intact unless 'failing'; a reference walk, not 'current', takes
@@ -70,14 +96,14 @@ pd_bond_load(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict ty
 }
 
 /* One bond of the force loop: decode (broken bonds, recontact), ask the
- * material and the failure law, add the force on i to fi and apply the
- * reaction on j, tally. The arrays are parameters so that 'restrict' holds
- * (GCC honours it on parameters): the force stores then do not make it
- * reload x or the material's tables. */
+ * material and the failure law, add the force on i to fi and the reaction
+ * on j to its sum (pd_loop.reaction), tally. The arrays are parameters so
+ * that 'restrict' holds (GCC honours it on parameters): the force stores
+ * then do not make it reload x or the material's tables. */
 PD_INLINE void
 pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow,
               const double *restrict x, const double xi[3], const double *restrict vol,
-              double *restrict f, double fi[3], pd_bond *bd, int idx, pd_break_sums *sums,
+              double *restrict reaction, double fi[4], pd_bond *bd, int idx, pd_break_sums *sums,
               pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
               pd_law_notes_fn notes, pd_law_note_fn note, double *row_note, int weighted,
@@ -103,10 +129,8 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   double fij[3];
   const double tl = directed ? 0.0 : share * bf.tl;
   for (int c = 0; c < 3; c++) fij[c] = directed ? share * bf.v[c] : tl * bd->d[c];
-  for (int c = 0; c < 3; c++) {
-    fi[c] += vj * fij[c];
-    f[3 * j + c] -= vi * fij[c];
-  }
+  pd_add4(fi, vj, fij[0], fij[1], fij[2]);
+  pd_add4(reaction + 4 * (ptrdiff_t) j, -vi, fij[0], fij[1], fij[2]);
   if (tallied) {
     /* a breaking bond's energy is booked as dissipated instead */
     const double ei = share == 1.0 ? bf.stored_i : 0.0, ej = share == 1.0 ? bf.stored_j : 0.0;
@@ -185,17 +209,19 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
  * bond by bond (pd_force_bond); the others take each row in chunks: the
  * vectorized first pass, then the scalar sums onto i and its (distinct)
  * far ends and the failure law's notes, in the same order and with the
- * same arithmetic as bond by bond. */
+ * same arithmetic as bond by bond. The far ends' sums (reaction, nall
+ * atoms) are zeroed first and added onto f last. */
 PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
                  const double *restrict x, const double *restrict vol, double *restrict f,
-                 pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
-                 pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
+                 double *restrict reaction, int nall, pd_tally *tally, pd_failure *fail,
+                 void *restrict mat, pd_strain_fn strain, pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
                  pd_may_break_fn may_break, pd_law_notes_fn notes, pd_law_note_fn note, int weighted,
                  int tallied, int failing, int directed)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int chunked = !tallied && !directed;
+  memset(reaction, 0, sizeof(double) * 4 * (size_t) nall);
   pd_bond bd;
   double g[4 * PD_CHUNK];
   for (int i = 0; i < b->nowner; i++) {
@@ -203,7 +229,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
     if (!n) continue;
     const int row = i * b->stride;
     const double vi = vol[i];
-    double fi[3] = {0.0, 0.0, 0.0};
+    double fi[4] = {0.0, 0.0, 0.0, 0.0};
     bd.i = i;
     bd.ti = type ? type[i] : 1;
     const int trow = bd.ti * ntypes;
@@ -219,14 +245,9 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                                   strain, force, may_break, notes, weighted, failing))) {
         for (int k = 0; k < m; k++) {
           const int j = b->far[row + k0 + k];
-          const double vj = vol[j];
-          /* one address for the three components (3 * j + c would be
-           * widened to a pointer offset once per component) */
-          double *restrict fj = f + 3 * (ptrdiff_t) j;
-          for (int c = 0; c < 3; c++) {
-            fi[c] += vj * g[c * PD_CHUNK + k];
-            fj[c] -= vi * g[c * PD_CHUNK + k];
-          }
+          const double gx = g[k], gy = g[PD_CHUNK + k], gz = g[2 * PD_CHUNK + k];
+          pd_add4(fi, vol[j], gx, gy, gz);
+          pd_add4(reaction + 4 * (ptrdiff_t) j, -vi, gx, gy, gz);
           if (failing) {
             const double value = g[3 * PD_CHUNK + k];
             note(fail, j, value);
@@ -236,13 +257,15 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
         continue;
       }
       for (int k = 0; k < m; k++)
-        pd_force_bond(b, type, trow, x, xi, vol, f, fi, &bd, row + k0 + k, &sums, tally, fail,
-                      mat, strain, force, breaks_now, breaks_after, notes, note, &row_note,
+        pd_force_bond(b, type, trow, x, xi, vol, reaction, fi, &bd, row + k0 + k, &sums, tally,
+                      fail, mat, strain, force, breaks_now, breaks_after, notes, note, &row_note,
                       weighted, tallied, failing, directed);
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
     if (failing) note(fail, i, row_note);
   }
+  for (int a = 0; a < nall; a++)
+    for (int c = 0; c < 3; c++) f[3 * a + c] += reaction[4 * a + c];
   if (failing) pd_add_break_sums(fail, &sums);
 }
 
@@ -252,9 +275,9 @@ pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn forc
               pd_may_break_fn may_break, pd_law_notes_fn notes, pd_law_note_fn note, int weighted,
               int tallied, int failing, int directed)
 {
-  pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->tally, L->fail, mat, strain,
-                   force, breaks_now, breaks_after, may_break, notes, note, weighted, tallied,
-                   failing, directed);
+  pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->reaction, L->nall, L->tally,
+                   L->fail, mat, strain, force, breaks_now, breaks_after, may_break, notes, note,
+                   weighted, tallied, failing, directed);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */

@@ -14,6 +14,11 @@ typedef struct pd_loop {
   double *f;               /* force density, 3 per atom */
   pd_tally *tally;         /* energy and virial, or NULL */
   pd_failure *fail;        /* NULL: no bond is or can be broken */
+  /* the force loop's scratch for its sums onto far ends: 4 doubles per
+   * atom (the 4th is padding), owned + ghost, any content (pd_bond_loop.h);
+   * NULL where no force is computed */
+  double *reaction;
+  int nall;                /* owned + ghost atoms */
 } pd_loop;
 
 #endif
