@@ -46,27 +46,39 @@ typedef int (*pd_may_break_fn)(const pd_failure *f, const pd_bond *bd, double ep
 typedef double (*pd_law_notes_fn)(const pd_failure *f, const pd_bond *bd);
 typedef void (*pd_law_note_fn)(const pd_failure *f, int atom, double value);
 
-/* acc[0..3] += s (a0, a1, a2, 0): one 4-wide add where the compiler has
- * vector types (GCC, clang), otherwise three; the same arithmetic, lane by
- * lane, either way. acc: 4 doubles, any alignment. */
+/* Four doubles summed lane by lane (the 4th is padding): one 4-wide add
+ * where the compiler has vector types (GCC, clang), scalar ones otherwise;
+ * the same arithmetic either way. Loaded from and stored to any 4 doubles. */
 #if defined(__GNUC__) || defined(__clang__)
-typedef double pd_v4 __attribute__((vector_size(32)));
-PD_INLINE void pd_add4(double *restrict acc, double s, double a0, double a1, double a2)
+typedef double pd_sum4 __attribute__((vector_size(32)));
+/* acc + s (a0, a1, a2, 0) */
+PD_INLINE pd_sum4 pd_sum4_axpy(pd_sum4 acc, double s, double a0, double a1, double a2)
 {
-  const pd_v4 a = {a0, a1, a2, 0.0};
-  pd_v4 sum;
-  memcpy(&sum, acc, sizeof sum);
-  sum += s * a;
-  memcpy(acc, &sum, sizeof sum);
+  const pd_sum4 a = {a0, a1, a2, 0.0};
+  return acc + s * a;
 }
 #else
-PD_INLINE void pd_add4(double *restrict acc, double s, double a0, double a1, double a2)
+typedef struct pd_sum4 { double v[4]; } pd_sum4;
+PD_INLINE pd_sum4 pd_sum4_axpy(pd_sum4 acc, double s, double a0, double a1, double a2)
 {
-  acc[0] += s * a0;
-  acc[1] += s * a1;
-  acc[2] += s * a2;
+  acc.v[0] += s * a0;
+  acc.v[1] += s * a1;
+  acc.v[2] += s * a2;
+  return acc;
 }
 #endif
+PD_INLINE pd_sum4 pd_sum4_load(const double *p)
+{
+  pd_sum4 v;
+  memcpy(&v, p, sizeof v);
+  return v;
+}
+PD_INLINE void pd_sum4_store(double *p, pd_sum4 v) { memcpy(p, &v, sizeof v); }
+/* p[0..3] += s (a0, a1, a2, 0) */
+PD_INLINE void pd_add4(double *restrict p, double s, double a0, double a1, double a2)
+{
+  pd_sum4_store(p, pd_sum4_axpy(pd_sum4_load(p), s, a0, a1, a2));
+}
 
 /* Slot idx of atom bd->i's row: its far end, types, weight and reference
  * length (intact unless 'failing'; a reference walk, not 'current', takes
@@ -243,16 +255,20 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                                   strain, force, may_break, notes, weighted, failing)
                  : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
                                   strain, force, may_break, notes, weighted, failing))) {
+        /* fi as a value: its array lives in memory across the law's calls */
+        pd_sum4 sum_i = pd_sum4_load(fi);
+        const int *restrict far = b->far + row + k0;
         for (int k = 0; k < m; k++) {
-          const int j = b->far[row + k0 + k];
+          const int j = far[k];
           const double gx = g[k], gy = g[PD_CHUNK + k], gz = g[2 * PD_CHUNK + k];
-          pd_add4(fi, vol[j], gx, gy, gz);
+          sum_i = pd_sum4_axpy(sum_i, vol[j], gx, gy, gz);
           pd_add4(reaction + 4 * (ptrdiff_t) j, -vi, gx, gy, gz);
-          if (failing) {
-            const double value = g[3 * PD_CHUNK + k];
-            note(fail, j, value);
-            row_note = value > row_note ? value : row_note;
-          }
+        }
+        pd_sum4_store(fi, sum_i);
+        for (int k = 0; failing && k < m; k++) {
+          const double value = g[3 * PD_CHUNK + k];
+          note(fail, far[k], value);
+          row_note = value > row_note ? value : row_note;
         }
         continue;
       }
