@@ -153,7 +153,10 @@ class Neighbourhood {
     const tagint mytag = tags[me];
     const double cutsq = cut * cut;
     int(*run)[2] = reinterpret_cast<int(*)[2]>(runs.data());
-    const int nrun = pd_cell_bins_runs(&bins, p, cut, run);
+    // only the cells that can hold a partner above (up >= -tie below;
+    // twice that margin for the round-off of p - tie)
+    const int axis = flat ? 1 : 2;
+    const int nrun = pd_cell_bins_runs(&bins, p, cut, axis, p[axis] - 2.0 * tie, run);
     size_t scanned = 0;
     for (int q = 0; q < nrun; q++) scanned += run[q][1] - run[q][0];
     if (scanned > js.size()) {

@@ -101,12 +101,16 @@ int pd_cell_bins_max_runs(const pd_cell_bins *b, double r)
   return span(b, r, 0) * span(b, r, 1);
 }
 
-int pd_cell_bins_runs(const pd_cell_bins *b, const double p[3], double r, int (*runs)[2])
+int pd_cell_bins_runs(const pd_cell_bins *b, const double p[3], double r, int axis, double from,
+                      int (*runs)[2])
 {
   const double inv = 1.0 / b->side;
   int lo[3], hi[3];
   for (int d = 0; d < 3; d++) {
-    lo[d] = cell_of(p[d] - r, b->lo[d], inv, b->n[d]);
+    /* cell_of is monotonic: a point at or above 'from' is in a cell at or
+     * above from's */
+    const double low = d == axis && from > p[d] - r ? from : p[d] - r;
+    lo[d] = cell_of(low, b->lo[d], inv, b->n[d]);
     hi[d] = cell_of(p[d] + r, b->lo[d], inv, b->n[d]);
   }
   /* a column whose cross-section lies farther than r from p (with a margin

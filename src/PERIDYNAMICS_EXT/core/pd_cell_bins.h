@@ -35,7 +35,11 @@ int pd_cell_bins_max_runs(const pd_cell_bins *b, double r);
 /* The runs of sorted points in the cells that a ball of radius r around p
  * can touch: run q is sorted points runs[q][0] <= s < runs[q][1]. Every
  * point within r of p is in a run (points farther away may be too).
- * Returns the number of runs (at most pd_cell_bins_max_runs(b, r)). */
-int pd_cell_bins_runs(const pd_cell_bins *b, const double p[3], double r, int (*runs)[2]);
+ * axis 0, 1 or 2 asks only for the points whose coordinate along it is at
+ * least 'from' (the cells wholly below are left out: the bond build asks
+ * for the partners above an atom); -1 for the whole ball. Returns the
+ * number of runs (at most pd_cell_bins_max_runs(b, r)). */
+int pd_cell_bins_runs(const pd_cell_bins *b, const double p[3], double r, int axis, double from,
+                      int (*runs)[2]);
 
 #endif
