@@ -840,7 +840,7 @@ double *PairPD::reactions()
   if (atom->nmax > nreaction) {
     nreaction = atom->nmax;
     memory->destroy(reaction);
-    memory->create(reaction, 4 * (bigint) nreaction, "pair:reaction");
+    memory->create(reaction, 4 * nreaction, "pair:reaction");
   }
   return reaction;
 }

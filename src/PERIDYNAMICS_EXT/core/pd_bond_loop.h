@@ -227,7 +227,8 @@ PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
                  const double *restrict x, const double *restrict vol, double *restrict f,
                  double *restrict reaction, int nall, pd_tally *tally, pd_failure *fail,
-                 void *restrict mat, pd_strain_fn strain, pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
+                 void *restrict mat, pd_strain_fn strain, pd_force_fn force,
+                 pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
                  pd_may_break_fn may_break, pd_law_notes_fn notes, pd_law_note_fn note, int weighted,
                  int tallied, int failing, int directed)
 {
