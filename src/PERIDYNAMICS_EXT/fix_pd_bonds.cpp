@@ -18,6 +18,7 @@
 #include "modify.h"
 #include "pd_compat.h"
 #include "pd_error.h"
+#include "pd_table_memory.h"
 #include "update.h"
 
 #include <cmath>
@@ -80,11 +81,7 @@ FixPDBonds::~FixPDBonds()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(npartner);
-  memory->destroy(partner);
-  memory->destroy(r0);
-  memory->destroy(weight);
-  memory->destroy(history);
-  memory->destroy(far);
+  destroy_tables();
   memory->destroy(built_tag);
   for (Field &f : fields) memory->destroy(f.data);
 }
@@ -487,12 +484,23 @@ void FixPDBonds::grow_rows(int n)
 {
   if (n <= nrows) return;
   if (nrows > 0) n = MAX(n, nrows + nrows / 8 + 64);
+  const int kept = nrows;
   nrows = n;
-  memory->grow(partner, nrows, maxpartner, "pd/bonds:partner");
-  memory->grow(r0, nrows, maxpartner, "pd/bonds:r0");
-  memory->grow(far, nrows, maxpartner, "pd/bonds:far");
-  if (use_weights) memory->grow(weight, nrows, maxpartner, "pd/bonds:weight");
-  if (nhistory) memory->grow(history, nrows, maxpartner * nhistory, "pd/bonds:history");
+  PDTableMemory::grow(error, partner, nrows, maxpartner, kept, "partner");
+  PDTableMemory::grow(error, r0, nrows, maxpartner, kept, "r0");
+  PDTableMemory::grow(error, far, nrows, maxpartner, kept, "far");
+  if (use_weights) PDTableMemory::grow(error, weight, nrows, maxpartner, kept, "weight");
+  if (nhistory) PDTableMemory::grow(error, history, nrows, maxpartner * nhistory, kept, "history");
+}
+
+void FixPDBonds::destroy_tables()
+{
+  PDTableMemory::destroy(partner);
+  PDTableMemory::destroy(r0);
+  PDTableMemory::destroy(weight);
+  PDTableMemory::destroy(history);
+  PDTableMemory::destroy(far);
+  nrows = 0;
 }
 
 void FixPDBonds::copy_arrays(int i, int j, int)
@@ -599,34 +607,20 @@ void FixPDBonds::resize_tables(int rowlength)
 {
   maxpartner = rowlength;
   maxexchange = per_atom_max(PDField::MIGRATE);
-  memory->destroy(partner);
-  memory->destroy(r0);
-  memory->destroy(weight);
-  memory->destroy(history);
-  memory->destroy(far);
-  nrows = 0;
+  destroy_tables();
   grow_rows(atom->nlocal + 1);
 }
 
 // Shorter rows for the bond tables, keeping the first 'rowlength' slots
-// of each: rows move forward in place, then the memory is given back.
-template <typename T>
-static void shorten(Memory *memory, T **&table, int nrows, int from, int to, const char *name)
-{
-  if (!table || to >= from) return;
-  for (int i = 1; i < nrows; i++) memmove(table[0] + (size_t) i * to, table[i], to * sizeof(T));
-  memory->grow(table, nrows, to, name);
-}
-
+// of each (in place).
 void FixPDBonds::shorten_rows(int rowlength)
 {
   if (rowlength >= maxpartner) return;
-  shorten(memory, partner, nrows, maxpartner, rowlength, "pd/bonds:partner");
-  shorten(memory, r0, nrows, maxpartner, rowlength, "pd/bonds:r0");
-  shorten(memory, far, nrows, maxpartner, rowlength, "pd/bonds:far");
-  if (use_weights) shorten(memory, weight, nrows, maxpartner, rowlength, "pd/bonds:weight");
-  if (nhistory)
-    shorten(memory, history, nrows, maxpartner * nhistory, rowlength * nhistory, "pd/bonds:history");
+  PDTableMemory::narrow(partner, nrows, maxpartner, rowlength);
+  PDTableMemory::narrow(r0, nrows, maxpartner, rowlength);
+  PDTableMemory::narrow(far, nrows, maxpartner, rowlength);
+  if (use_weights) PDTableMemory::narrow(weight, nrows, maxpartner, rowlength);
+  if (nhistory) PDTableMemory::narrow(history, nrows, maxpartner * nhistory, rowlength * nhistory);
   maxpartner = rowlength;
   maxexchange = per_atom_max(PDField::MIGRATE);
 }

@@ -189,6 +189,7 @@ class FixPDBonds : public Fix {
   void resize_tables(int rowlength);
   void shorten_rows(int rowlength);
   void grow_rows(int n);
+  void destroy_tables();
   void ensure_row(int i) { if (i >= nrows) grow_rows(i + 1); }
   int per_atom_doubles(int i, int flag) const;
   int per_atom_max(int flag) const;

@@ -5,11 +5,11 @@
    LAMMPS neighbor list: owned and ghost atoms are sorted into cells by
    their reference position (core/pd_cell_bins.h), taken in the periodic
    image of their current position, and each owned atom looks at the atoms
-   of the cells within reach of it. Two passes over the same candidates,
-   one that counts (the tables are rectangular: their row length is the
-   longest family over all ranks) and one that fills, storing each far
-   end as the image it found; the cells are freed before the far ends are
-   checked (map_partners).
+   of the cells within reach of it. Its candidates are kept in a list per
+   atom (the tables are rectangular: their row length, the longest list
+   over all ranks, must be known before they are filled); the cells are
+   freed, and the tables filled from the lists, storing each far end as the
+   image it found, before the far ends are checked (map_partners).
 
    Which candidates become bonds, and what they store, is decided exactly
    as before the cells existed: the minimum image of x0_j - x0_i, the
@@ -28,6 +28,7 @@
 #include "domain.h"
 #include "error.h"
 #include "pd_compat.h"
+#include "pd_table_memory.h"
 
 #include <cmath>
 #include <ctime>
@@ -76,14 +77,13 @@ constexpr double CELLS_PER_REACH = 3.0;
 // its owner's x0 unshifted, and an owned atom's x0 lies outside the box once
 // the atom has crossed a periodic boundary. Periods are counted in box
 // units (lamda), so tilted boxes work too.
-std::vector<double> reference_images(Atom *atom, Domain *domain)
+void reference_images(Atom *atom, Domain *domain, double *y)
 {
   const int nall = atom->nlocal + atom->nghost;
   double **x = atom->x, **x0 = atom->x0;
   const double *h = domain->h, *hinv = domain->h_inv;
   const bool tilted = domain->triclinic;
   const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
-  std::vector<double> y(3 * (size_t) nall);
   for (int i = 0; i < nall; i++) {
     const double d[3] = {x[i][0] - x0[i][0], x[i][1] - x0[i][1], x[i][2] - x0[i][2]};
     double n[3] = {hinv[0] * d[0], hinv[1] * d[1], hinv[2] * d[2]};
@@ -99,7 +99,6 @@ std::vector<double> reference_images(Atom *atom, Domain *domain)
     }
     for (int k = 0; k < 3; k++) y[3 * i + k] = x0[i][k] + shift[k];
   }
-  return y;
 }
 
 // The atoms whose reference image lies within reach of an owned atom's
@@ -113,9 +112,10 @@ class Neighbourhood {
     Atom *atom = lmp->atom;
     const int nall = atom->nlocal + atom->nghost;
     {
-      const std::vector<double> y = reference_images(atom, lmp->domain);
+      PDTableMemory::Block<double> y(3 * (size_t) nall + 3);
+      if (y.data) reference_images(atom, lmp->domain, y.data);
       const double side = reach > 0.0 ? reach / CELLS_PER_REACH : 1.0;    // (no reach: no bonds)
-      const int status = pd_cell_bins_build(&bins, y.data(), nall, side, 2L * nall + 64);
+      const int status = y.data ? pd_cell_bins_build(&bins, y.data, nall, side, 2L * nall + 64) : -2;
       if (status)
         lmp->error->one(FLERR, "Fix pd/bonds: cannot sort the atoms into cells to build the bond "
                         "families ({})", status == -1 ? "a reference position is not finite" : "out of memory");
@@ -201,6 +201,43 @@ class Neighbourhood {
   std::vector<double> d2s;  // and their squared distances
 };
 
+// Lists of atoms, one per owned atom, one after another (the family
+// build's candidates: about as many as the bonds).
+class CandidateLists {
+ public:
+  CandidateLists(LAMMPS *lmp, int nrows) : error(lmp->error), start(nrows + 1, 0), items(0) {}
+
+  // room for n atoms in the next list
+  int *room(int n)
+  {
+    const size_t end = start[filled], need = end + n;
+    if (need > capacity) {
+      // the lists so far, projected over all rows, and a margin
+      const size_t rows = start.size() - 1;
+      const size_t projected = need + need / (filled + 1) * (rows - filled) / 16 * 17 + 1024;
+      capacity = MAX(projected, capacity + capacity / 2);
+      if (!items.resize(capacity, end))
+        error->one(FLERR, "Fix pd/bonds: out of memory for the candidate bonds ({} atoms)", capacity);
+    }
+    return items.data + end;
+  }
+  // the next list holds the first n atoms of its room
+  void close(int n)
+  {
+    start[filled + 1] = start[filled] + n;
+    filled++;
+  }
+  const int *list(int i) const { return items.data + start[i]; }
+  int length(int i) const { return (int) (start[i + 1] - start[i]); }
+
+ private:
+  Error *error;
+  std::vector<size_t> start;
+  PDTableMemory::Block<int> items;
+  size_t capacity = 0;
+  int filled = 0;
+};
+
 }    // namespace
 
 // The longest reach of a bond between two types of this style (types of
@@ -247,44 +284,50 @@ void FixPDBonds::build_families()
     }
   std::vector<bigint> touching(nt * nt, 0);
   int differs = 0, mylongest = 0, coincident = 0;
+  // the candidates each atom would store (its bonds and a few more, before
+  // the exact test), to size the tables (their rows are as long as the
+  // longest list); and the type pairs whose atoms come within one of the
+  // two types' horizons (each pair is seen at the end that would store it)
   {
-    Neighbourhood near(lmp, longest_reach(spec));
-    // count the candidates each atom would store (an upper bound of its
-    // bonds, before the exact test) to size the tables; and note the type
-    // pairs whose atoms come within one of the two types' horizons (each
-    // pair is seen at the end that would store it)
+    CandidateLists candidates(lmp, nlocal);
     int mymax = 0;
-    for (int i = 0; i < nlocal; i++) {
-      const int ncand = near.gather(i);
-      const double *rsq = &reachsq[type[i] * nt];
-      int n = 0;
-      for (int c = 0; c < ncand; c++) n += near.d2(c) <= rsq[type[near.atom(c)]];
-      mymax = MAX(mymax, n);
-      if (nt == 2) continue;
-      for (int c = 0; c < ncand; c++) {
-        const int j = near.atom(c);
-        const int a = MIN(type[i], type[j]), b = MAX(type[i], type[j]);
-        if (a == b || touching[a * nt + b]) continue;
-        double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-        PDCompat::minimum_image(domain, d);
-        const double reach = MAX(spec.horizon(a, a), spec.horizon(b, b));
-        touching[a * nt + b] = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= reach * reach;
+    {
+      Neighbourhood near(lmp, longest_reach(spec));
+      for (int i = 0; i < nlocal; i++) {
+        const int ncand = near.gather(i);
+        const double *rsq = &reachsq[type[i] * nt];
+        int *list = candidates.room(ncand), n = 0;
+        for (int c = 0; c < ncand; c++) {
+          list[n] = near.atom(c);
+          n += near.d2(c) <= rsq[type[near.atom(c)]];
+        }
+        candidates.close(n);
+        mymax = MAX(mymax, n);
+        if (nt == 2) continue;
+        for (int c = 0; c < ncand; c++) {
+          const int j = near.atom(c);
+          const int a = MIN(type[i], type[j]), b = MAX(type[i], type[j]);
+          if (a == b || touching[a * nt + b]) continue;
+          double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+          PDCompat::minimum_image(domain, d);
+          const double reach = MAX(spec.horizon(a, a), spec.horizon(b, b));
+          touching[a * nt + b] = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= reach * reach;
+        }
       }
     }
     int longest;
     MPI_Allreduce(&mymax, &longest, 1, MPI_INT, MPI_MAX, world);
     resize_tables(MAX(longest, 1));
 
-    // fill: the bonds among the counted candidates
+    // fill: the bonds among the candidates
     for (int i = 0; i < nlocal; i++) {
       npartner[i] = 0;
       built_tag[i] = tag[i];
-      const int ncand = near.gather(i);
-      const double *rsq = &reachsq[type[i] * nt];
+      const int *list = candidates.list(i), ncand = candidates.length(i);
       const double coincident_length = 1e-12 * spec.horizon(type[i], type[i]);
       for (int c = 0; c < ncand; c++) {
-        const int j = near.atom(c);
-        if (!(near.d2(c) <= rsq[type[j]]) || !candidate(i, j)) continue;
+        const int j = list[c];
+        if (!candidate(i, j)) continue;
         const int k = npartner[i];
         if (k == maxpartner) {
           differs = 1;

@@ -1,8 +1,10 @@
 /* Cell bins (pd_cell_bins.h): a counting sort of points by cell. */
 #include "pd_cell_bins.h"
 
+#include "pd_pages.h"
+
 #include <math.h>
-#include <stdlib.h>
+#include <string.h>
 
 /* the cell of coordinate x along one dimension, clamped to the grid */
 static int cell_of(double x, double lo, double inv, int n)
@@ -54,13 +56,15 @@ int pd_cell_bins_build(pd_cell_bins *b, const double *pos, int npoint, double si
     }
   size_grid(b, hi, side, max_cells);
   const int ncells = b->n[0] * b->n[1] * b->n[2];
-  b->start = calloc((size_t) ncells + 1, sizeof(int));
-  b->index = malloc(((size_t) npoint + 1) * sizeof(int));
-  b->pos = malloc(((size_t) npoint + 1) * 3 * sizeof(double));
+  /* (pd_pages: the build's first touch of these is a fault per 4 kB page) */
+  b->start = pd_pages_alloc(((size_t) ncells + 1) * sizeof(int));
+  b->index = pd_pages_alloc(((size_t) npoint + 1) * sizeof(int));
+  b->pos = pd_pages_alloc(((size_t) npoint + 1) * 3 * sizeof(double));
   if (!b->start || !b->index || !b->pos) {
     pd_cell_bins_free(b);
     return -2;
   }
+  memset(b->start, 0, ((size_t) ncells + 1) * sizeof(int));
   b->npoint = npoint;
   /* count, then prefix sums give each cell's end; placing the points in
    * reverse input order moves each end back to its start and keeps the
@@ -81,9 +85,9 @@ int pd_cell_bins_build(pd_cell_bins *b, const double *pos, int npoint, double si
 
 void pd_cell_bins_free(pd_cell_bins *b)
 {
-  free(b->start);
-  free(b->index);
-  free(b->pos);
+  pd_pages_free(b->start);
+  pd_pages_free(b->index);
+  pd_pages_free(b->pos);
   b->start = b->index = NULL;
   b->pos = NULL;
   b->npoint = 0;
