@@ -259,18 +259,20 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
         /* fi as a value: its array lives in memory across the law's calls */
         pd_sum4 sum_i = pd_sum4_load(fi);
         const int *restrict far = b->far + row + k0;
+        double rn = row_note;    /* (a local: the bond-by-bond path takes row_note's address) */
         for (int k = 0; k < m; k++) {
           const int j = far[k];
           const double gx = g[k], gy = g[PD_CHUNK + k], gz = g[2 * PD_CHUNK + k];
           sum_i = pd_sum4_axpy(sum_i, vol[j], gx, gy, gz);
           pd_add4(reaction + 4 * (ptrdiff_t) j, -vi, gx, gy, gz);
+          if (failing) {
+            const double value = g[3 * PD_CHUNK + k];
+            note(fail, j, value);
+            rn = value > rn ? value : rn;
+          }
         }
+        row_note = rn;
         pd_sum4_store(fi, sum_i);
-        for (int k = 0; failing && k < m; k++) {
-          const double value = g[3 * PD_CHUNK + k];
-          note(fail, far[k], value);
-          row_note = value > row_note ? value : row_note;
-        }
         continue;
       }
       for (int k = 0; k < m; k++)
