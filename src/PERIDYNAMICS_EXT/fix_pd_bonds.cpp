@@ -241,7 +241,7 @@ void FixPDBonds::report_bonds_by_type(const std::vector<bigint> &touching_mine)
 // own it, so that the same bonds are lost on any number of ranks.
 void FixPDBonds::map_partners(bool setup, bool built)
 {
-  if (setup) check_stored_partners();
+  if (setup) check_stored_partners(!built);    // (bonds just built name existing atoms)
   nowned = atom->nlocal;
   const double cut = comm->get_comm_cutoff(), cutsq = cut * cut;
   const int nall = atom->nlocal + atom->nghost;
@@ -329,8 +329,9 @@ bigint FixPDBonds::count_lost(bigint stored, bigint intact)
 }
 
 // What a restart file or a migration delivered must name real atoms and
-// real lengths before it is used to index anything (a damaged file).
-void FixPDBonds::check_stored_partners()
+// real lengths before it is used to index anything (a damaged file); the
+// bonds themselves are not scanned right after the build made them.
+void FixPDBonds::check_stored_partners(bool scan_bonds)
 {
   bigint total_damaged, claimed = damaged ? damaged_example : 0, bad_count;
   MPI_Allreduce(&damaged, &total_damaged, 1, MPI_LMP_BIGINT, MPI_SUM, world);
@@ -339,6 +340,7 @@ void FixPDBonds::check_stored_partners()
     error->all(FLERR, "Fix pd/bonds: {} atoms arrived with a bond count outside 0 to {} (e.g. {}) or "
                "a record longer or shorter than its count and the listed per-atom fields make: the "
                "restart file is damaged", total_damaged, maxpartner, bad_count);
+  if (!scan_bonds) return;
   bigint bad = 0;
   tagint example = 0;
   for (int i = 0; i < atom->nlocal; i++)
@@ -376,10 +378,8 @@ void FixPDBonds::reference_sums()
   const int nall = atom->nlocal + atom->nghost;
   double *family = family_volume(), *weighted = weighted_volume();
   for (int i = 0; i < nall; i++) family[i] = weighted[i] = 0.0;
-  pd_bond_view v = view();
-  pd_weighted_volume(&v, atom->vfrac, weighted);
-  v.weight = nullptr;
-  pd_weighted_volume(&v, atom->vfrac, family);
+  const pd_bond_view v = view();
+  pd_reference_volumes(&v, atom->vfrac, family, weighted);
   sum_to_owners(iweighted_volume);
   sum_to_owners(ifamily_volume);
 }

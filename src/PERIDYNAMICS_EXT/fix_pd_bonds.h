@@ -173,7 +173,7 @@ class FixPDBonds : public Fix {
   void take_family_spec();
   void build_families();
   void map_partners(bool setup, bool built = false);
-  void check_stored_partners();
+  void check_stored_partners(bool scan_bonds);
   bigint count_lost(bigint stored, bigint intact);
   void warn_ambiguous_images(bigint mine);
   void report_bonds_by_type(const std::vector<bigint> &touching);

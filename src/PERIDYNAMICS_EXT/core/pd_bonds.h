@@ -69,6 +69,10 @@ typedef struct pd_bond_force {
  * (w = 1 without weights: the family volume). */
 void pd_weighted_volume(const pd_bond_view *b, const double *vol, double *m);
 
+/* The family volume (w = 1) and the weighted volume together, in one pass
+ * over the bonds (either may be NULL): the same sums, in the same order. */
+void pd_reference_volumes(const pd_bond_view *b, const double *vol, double *family, double *weighted);
+
 /* The same over intact bonds only (a broken bond has a negative length). */
 void pd_intact_volume(const pd_bond_view *b, const double *vol, double *m);
 
