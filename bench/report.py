@@ -416,8 +416,8 @@ def print_sweep(recs):
         atoms = r["n"] ** 3
         print(f"  {r['style']:12s} {str(r['n']) + '^3':>5s} {atoms:7d} {r['bonds']:12d} {r['steps']:5d} "
               f"{r['loop']:8.3f} {r['cpu']:5.1f} {mbonds(r):10.1f} {ns_per_bond(r):8.2f} {r['build_s']:10.3f} "
-              f"{r['lammps_s']:10.3f} "
-              f"{r['build_steps']:13.1f} {r['families_steps'] or float('nan'):13.1f} {r['rss_kib'] / 1024:14.1f} {1024 * r['rss_kib'] / r['bonds']:10.1f}")
+              f"{r['lammps_s']:10.3f} {r['build_steps']:13.1f} {r['families_steps'] or float('nan'):13.1f} "
+              f"{r['rss_kib'] / 1024:14.1f} {1024 * r['rss_kib'] / r['bonds']:10.1f}")
     print("  Loop, CPU %: the wall-clock Loop time of the kept pass and its CPU use. setups = setup of the")
     print("  first 'run 0' (families built) minus setup of a second one (families kept), wall clock, the")
     print("  smaller of the passes; LAMMPS = the same for LAMMPS alone (pairs/lammps_alone.in: no pair style,")

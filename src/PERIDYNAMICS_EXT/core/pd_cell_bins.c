@@ -56,7 +56,7 @@ int pd_cell_bins_build(pd_cell_bins *b, const double *pos, int npoint, double si
     }
   size_grid(b, hi, side, max_cells);
   const int ncells = b->n[0] * b->n[1] * b->n[2];
-  /* (pd_pages: the build's first touch of these is a fault per 4 kB page) */
+  /* (pd_pages: large blocks in huge pages, whose first touch is cheaper) */
   b->start = pd_pages_alloc(((size_t) ncells + 1) * sizeof(int));
   b->index = pd_pages_alloc(((size_t) npoint + 1) * sizeof(int));
   b->pos = pd_pages_alloc(((size_t) npoint + 1) * 3 * sizeof(double));
