@@ -1,16 +1,20 @@
-"""The bond loops' two ways give the same forces, to the bit (issue 13).
+"""The bond loops' two ways give the same forces, energy and virial, to
+the bit (issue 13).
 
 A row of bonds goes either through the vectorized first pass and the
-scalar scatter, or bond by bond: on steps that tally energy and virial,
-and for rows with a broken or breaking bond. Both must do the same
-arithmetic in the same order. Each case runs twice from the same start,
-once with the energy tallied on every step (every row bond by bond) and
-once on the last step only (rows in two passes, except those with broken
-bonds), and compares positions, velocities and forces after 60 steps as
-text with 17 digits: they must be identical. Bonds break during the runs
-(checked), so rows of both kinds meet in the second run; partial
-quadrature gives rows of more than one chunk (64 bonds); two atom types
-and random velocities (0.6 m/s) make every bond different.
+scalar scatter, or bond by bond: on steps that tally per-atom energy, and
+for rows with a broken or breaking bond. Both must do the same arithmetic
+in the same order. Each case runs three times from the same start: with
+per-atom energy (compute pe/atom) on every step (every row bond by bond),
+with the global energy and pressure on every step (rows in two passes,
+the tallies in the scalar one), and with thermo on the last step only.
+Positions, velocities and forces after 60 steps, as text with 17 digits,
+must be identical, and so must the first two runs' energy and virial
+(compute pressure NULL virial: the pressure's kinetic part would hide
+it) at every step. Bonds break during the runs (checked), so rows of both
+kinds meet; partial quadrature gives rows of more than one chunk (64
+bonds); two atom types and random velocities (0.6 m/s) make every bond
+different.
 """
 from lmptest import *
 
@@ -33,7 +37,7 @@ CASES = {
 }
 
 
-def deck(pair, every, tag):
+def deck(pair, every, tag, per_atom):
     return f"""units si
 boundary p p p
 atom_style peri
@@ -52,28 +56,47 @@ velocity all set v_vx v_vy v_vz
 {pair}
 fix 1 all nve
 timestep 1.0e-8
+compute pa all pe/atom
+compute spa all reduce sum c_pa
+compute vir all pressure NULL virial
 thermo {every}
-thermo_style custom step pe press
+thermo_style custom step pe c_vir[1] c_vir[2] c_vir[3] c_vir[4] c_vir[5] c_vir[6]{" c_spa" if per_atom else ""}
+thermo_modify format float %.17g
 run 60
 write_dump all custom dump.{tag} id x y z vx vy vz fx fy fz modify format float %.17g sort id
 run 0
 """
 
 
+# (thermo every, per-atom energy): bond by bond; chunked, tallied every
+# step; chunked, tallied at the end
+RUNS = [(1, True), (1, False), (60, False)]
+
 for name, pair in CASES.items():
     tag = re.sub(r"[^A-Za-z0-9]+", "_", name)
-    dumps, broken = [], []
-    for every in (1, 60):
-        out, _ = run(deck(pair, every, f"{tag}.{every}"), d, name=f"in.{tag}.{every}")
-        dumps.append(os.path.join(d, f"dump.{tag}.{every}"))
+    dumps, broken, tallies = [], [], []
+    for every, per_atom in RUNS:
+        key = f"{tag}.{every}{'.atom' if per_atom else ''}"
+        out, _ = run(deck(pair, every, key, per_atom), d, name=f"in.{key}")
+        dumps.append(os.path.join(d, f"dump.{key}"))
         broken.append(int(log_value(out, r"pd/bonds: \d+ bonds kept, (\d+) of them broken")))
+        # the timed run's thermo rows (before its Loop time line)
+        tallies.append([tuple(r[k] for k in ["PotEng"] + [f"c_vir[{c}]" for c in range(1, 7)])
+                        for r in thermo(out.split("Loop time")[0])])
     total = int(log_value(out, r"pd/bonds: (\d+) bonds kept"))
     check(f"{name}: some bonds broke during the run, not all (so rows go both ways)",
-          0 < broken[1] < total / 2, f"{broken[1]} of {total} broken")
-    check(f"{name}: the same bonds broke with the energy tallied every step", broken[0] == broken[1],
-          f"{broken[0]} vs {broken[1]}")
-    same = open(dumps[0]).read() == open(dumps[1]).read()
-    check(f"{name}: positions, velocities and forces identical to the bit", same,
-          "" if same else f"max relative difference {max_rel_diff(read_dump(dumps[0]), read_dump(dumps[1])):.3g}")
+          0 < broken[2] < total / 2, f"{broken[2]} of {total} broken")
+    check(f"{name}: the same bonds broke in the three runs", broken[0] == broken[1] == broken[2],
+          f"{broken}")
+    texts = [open(p).read() for p in dumps]
+    for r in (1, 2):
+        same = texts[0] == texts[r]
+        check(f"{name}: positions, velocities and forces identical to the bit (run {r + 1} against "
+              "bond by bond)", same,
+              "" if same else f"max relative difference {max_rel_diff(read_dump(dumps[0]), read_dump(dumps[r])):.3g}")
+    check(f"{name}: energy and virial at each of the 61 steps identical to the bit, chunked and "
+          "bond by bond", len(tallies[0]) == 61 and tallies[0] == tallies[1],
+          f"{len(tallies[0])} rows; first difference "
+          f"{next(((a, b) for a, b in zip(tallies[0], tallies[1]) if a != b), None)}")
 
 finish()

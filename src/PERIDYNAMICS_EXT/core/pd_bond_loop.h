@@ -188,7 +188,9 @@ pd_bond_load_ahead(pd_bond *bd, const pd_bond_view *restrict b, const int *restr
 
 /* The first pass over bonds k0 .. k0+m-1 of row 'row': every intact bond's
  * force on i per V_i V_j into g (component c of bond k at c * PD_CHUNK + k)
- * and, for the failure law's note, what it notes (at 3 * PD_CHUNK + k). No
+ * and, for the failure law's note, what it notes (at 3 * PD_CHUNK + k);
+ * when 'tallied', its t / |Y| and the energies it stores at both ends (at
+ * 4, 5 and 6 * PD_CHUNK + k). No
  * store that another bond could read, so the compiler vectorizes it (the
  * far ends' positions gathered). Returns nonzero if a bond is broken or
  * might break now or after (the law's screen, _ahead): the caller then
@@ -198,7 +200,7 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
                const double *restrict x, const double xi[3], int i, int row, int m,
                double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                pd_force_fn force, pd_may_break_fn may_break, pd_law_notes_fn notes, int weighted,
-               int failing)
+               int failing, int tallied)
 {
   int special = 0;
   for (int k = 0; k < m; k++) {
@@ -213,16 +215,22 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
       g[3 * PD_CHUNK + k] = notes(fail, &bd);
     }
     for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = bf.tl * bd.d[c];
+    if (tallied) {
+      g[4 * PD_CHUNK + k] = bf.tl;
+      g[5 * PD_CHUNK + k] = bf.stored_i;
+      g[6 * PD_CHUNK + k] = bf.stored_j;
+    }
   }
   return special;
 }
 
-/* Walks every bond once. Evaluations that tally and directed materials go
- * bond by bond (pd_force_bond); the others take each row in chunks: the
- * vectorized first pass, then the scalar sums onto i and its (distinct)
- * far ends and the failure law's notes, in the same order and with the
- * same arithmetic as bond by bond. The far ends' sums (reaction, nall
- * atoms) are zeroed first and added onto f last. */
+/* Walks every bond once. Evaluations that tally per-atom energy and
+ * directed materials go bond by bond (pd_force_bond); the others take each
+ * row in chunks: the vectorized first pass, then the scalar sums onto i
+ * and its (distinct) far ends, the failure law's notes and the energy and
+ * virial tallies, in the same order and with the same arithmetic as bond
+ * by bond. The far ends' sums (reaction, nall atoms) are zeroed first and
+ * added onto f last. */
 PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
                  const double *restrict x, const double *restrict vol, double *restrict f,
@@ -233,10 +241,10 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                  int tallied, int failing, int directed)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
-  const int chunked = !tallied && !directed;
+  const int chunked = !directed && !(tallied && tally->eatom);
   memset(reaction, 0, sizeof(double) * 4 * (size_t) nall);
   pd_bond bd;
-  double g[4 * PD_CHUNK];
+  double g[7 * PD_CHUNK];
   for (int i = 0; i < b->nowner; i++) {
     const int n = b->count[i];
     if (!n) continue;
@@ -253,9 +261,9 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       /* (one copy of the first pass for one atom type: no type loads) */
       if (chunked &&
           !(type ? pd_force_chunk(b, type, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, may_break, notes, weighted, failing)
+                                  strain, force, may_break, notes, weighted, failing, tallied)
                  : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, may_break, notes, weighted, failing))) {
+                                  strain, force, may_break, notes, weighted, failing, tallied))) {
         /* fi as a value: its array lives in memory across the law's calls */
         pd_sum4 sum_i = pd_sum4_load(fi);
         const int *restrict far = b->far + row + k0;
@@ -273,6 +281,14 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
         }
         row_note = rn;
         pd_sum4_store(fi, sum_i);
+        /* as pd_force_bond tallies an intact bond, bond after bond */
+        for (int k = 0; tallied && k < m; k++) {
+          const int j = far[k];
+          const double vj = vol[j], tl = g[4 * PD_CHUNK + k];
+          const double dij[3] = {-(x[3 * j] - xi[0]), -(x[3 * j + 1] - xi[1]), -(x[3 * j + 2] - xi[2])};
+          tally->energy += g[5 * PD_CHUNK + k] * vj + g[6 * PD_CHUNK + k] * vi;
+          pd_tally_virial(tally, dij, -tl * vi * vj);
+        }
         continue;
       }
       for (int k = 0; k < m; k++)
