@@ -17,9 +17,9 @@
  *
  * Speed: a row (one atom's bonds) goes in two passes, a vectorizable one
  * that computes every bond's force (gathering the far ends' positions)
- * and a scalar one that adds them onto the far ends. Rows with a broken
- * or breaking bond, steps that tally and directed materials go bond by
- * bond. Both ways do the same arithmetic in the same order, so the
+ * and a scalar one that adds them onto the far ends (and tallies energy
+ * and virial). Rows with a broken or breaking bond, steps that tally
+ * per-atom energy and directed materials go bond by bond. Both ways do the same arithmetic in the same order, so the
  * results are the same to the bit (lammps.kernels). The far ends' sums
  * go into a scratch of 4 doubles per atom (pd_loop.reaction), added onto
  * f at the end: a bond's reaction is then one 4-wide add instead of three
@@ -146,17 +146,13 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   if (tallied) {
     /* a breaking bond's energy is booked as dissipated instead */
     const double ei = share == 1.0 ? bf.stored_i : 0.0, ej = share == 1.0 ? bf.stored_j : 0.0;
-    tally->energy += ei * vj + ej * vi;
-    if (tally->eatom) {
-      tally->eatom[i] += ei * vj;
-      tally->eatom[j] += ej * vi;
-    }
-    const double dij[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
+    pd_tally_energy(tally, i, j, vi, vj, ei, ej);
     if (directed) {
+      const double dij[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
       const double fv[3] = {vi * vj * fij[0], vi * vj * fij[1], vi * vj * fij[2]};
       pd_tally_virial_pair(tally, dij, fv);
     } else {
-      pd_tally_virial(tally, dij, -tl * vi * vj);
+      pd_tally_virial_along(tally, bd->d, tl, vi, vj);
     }
   }
   if (failing && !bd->broken) {
@@ -284,10 +280,10 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
         /* as pd_force_bond tallies an intact bond, bond after bond */
         for (int k = 0; tallied && k < m; k++) {
           const int j = far[k];
-          const double vj = vol[j], tl = g[4 * PD_CHUNK + k];
-          const double dij[3] = {-(x[3 * j] - xi[0]), -(x[3 * j + 1] - xi[1]), -(x[3 * j + 2] - xi[2])};
-          tally->energy += g[5 * PD_CHUNK + k] * vj + g[6 * PD_CHUNK + k] * vi;
-          pd_tally_virial(tally, dij, -tl * vi * vj);
+          const double vj = vol[j];
+          const double d[3] = {x[3 * j] - xi[0], x[3 * j + 1] - xi[1], x[3 * j + 2] - xi[2]};
+          pd_tally_energy(tally, i, j, vi, vj, g[5 * PD_CHUNK + k], g[6 * PD_CHUNK + k]);
+          pd_tally_virial_along(tally, d, g[4 * PD_CHUNK + k], vi, vj);
         }
         continue;
       }
