@@ -146,13 +146,17 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   if (tallied) {
     /* a breaking bond's energy is booked as dissipated instead */
     const double ei = share == 1.0 ? bf.stored_i : 0.0, ej = share == 1.0 ? bf.stored_j : 0.0;
-    pd_tally_energy(tally, i, j, vi, vj, ei, ej);
+    tally->energy += ei * vj + ej * vi;
+    if (tally->eatom) {
+      tally->eatom[i] += ei * vj;
+      tally->eatom[j] += ej * vi;
+    }
+    const double dij[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
     if (directed) {
-      const double dij[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
       const double fv[3] = {vi * vj * fij[0], vi * vj * fij[1], vi * vj * fij[2]};
       pd_tally_virial_pair(tally, dij, fv);
     } else {
-      pd_tally_virial_along(tally, bd->d, tl, vi, vj);
+      pd_tally_virial(tally, dij, -tl * vi * vj);
     }
   }
   if (failing && !bd->broken) {
@@ -277,13 +281,15 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
         }
         row_note = rn;
         pd_sum4_store(fi, sum_i);
-        /* as pd_force_bond tallies an intact bond, bond after bond */
+        /* as pd_force_bond tallies an intact bond, bond after bond (its
+         * arithmetic written again here: through shared helpers this
+         * pass ran 6% slower on tallied steps) */
         for (int k = 0; tallied && k < m; k++) {
           const int j = far[k];
-          const double vj = vol[j];
-          const double d[3] = {x[3 * j] - xi[0], x[3 * j + 1] - xi[1], x[3 * j + 2] - xi[2]};
-          pd_tally_energy(tally, i, j, vi, vj, g[5 * PD_CHUNK + k], g[6 * PD_CHUNK + k]);
-          pd_tally_virial_along(tally, d, g[4 * PD_CHUNK + k], vi, vj);
+          const double vj = vol[j], tl = g[4 * PD_CHUNK + k];
+          const double dij[3] = {-(x[3 * j] - xi[0]), -(x[3 * j + 1] - xi[1]), -(x[3 * j + 2] - xi[2])};
+          tally->energy += g[5 * PD_CHUNK + k] * vj + g[6 * PD_CHUNK + k] * vi;
+          pd_tally_virial(tally, dij, -tl * vi * vj);
         }
         continue;
       }

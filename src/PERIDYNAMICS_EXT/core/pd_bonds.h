@@ -98,24 +98,6 @@ static inline void pd_tally_virial(pd_tally *t, const double d[3], double fpair)
   t->virial[5] += d[1] * d[2] * fpair;
 }
 
-/* A bond's energy: ei and ej stored at each end per unit partner volume
- * (per-atom too when eatom is set). */
-static inline void pd_tally_energy(pd_tally *t, int i, int j, double vi, double vj, double ei, double ej)
-{
-  t->energy += ei * vj + ej * vi;
-  if (t->eatom) {
-    t->eatom[i] += ei * vj;
-    t->eatom[j] += ej * vi;
-  }
-}
-
-/* A bond's virial for a force tl d on i per V_i V_j along d = x_j - x_i. */
-static inline void pd_tally_virial_along(pd_tally *t, const double d[3], double tl, double vi, double vj)
-{
-  const double dij[3] = {-d[0], -d[1], -d[2]};
-  pd_tally_virial(t, dij, -tl * vi * vj);
-}
-
 /* Add a bond's virial for a force fv on i (not necessarily along d =
  * x_i - x_j): the symmetric part of d (x) fv. */
 static inline void pd_tally_virial_pair(pd_tally *t, const double d[3], const double fv[3])
