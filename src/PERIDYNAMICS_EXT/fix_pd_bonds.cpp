@@ -21,6 +21,7 @@
 #include "pd_table_memory.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -429,37 +430,58 @@ double FixPDBonds::memory_usage()
 
 /* ---------------------------------------------------------------------- */
 
+// The loops of the four exchanges, with the width a constant where it is
+// small (1: sums and notes, 2: a pair of per-atom values) and the reverse
+// exchange's rule chosen outside them: per atom, generic loops cost about
+// twice as much (PERI's rule: 2.8% of a step at 16^3).
+namespace {
+// W: the width, or 0 for w
+template <int W> int pack_listed(const double *a, int width, int n, const int *list, double *buf)
+{
+  const int w = W ? W : width;
+  for (int i = 0; i < n; i++)
+    for (int c = 0; c < w; c++) buf[i * w + c] = a[list[i] * w + c];
+  return n * w;
+}
+
+template <int W>
+void unpack_listed(double *a, int width, int n, const int *list, const double *buf, bool max)
+{
+  const int w = W ? W : width;
+  if (max) {
+    for (int i = 0; i < n; i++)
+      for (int c = 0; c < w; c++) a[list[i] * w + c] = MAX(a[list[i] * w + c], buf[i * w + c]);
+  } else {
+    for (int i = 0; i < n; i++)
+      for (int c = 0; c < w; c++) a[list[i] * w + c] += buf[i * w + c];
+  }
+}
+}    // namespace
+
 int FixPDBonds::pack_forward_comm(int n, int *list, double *buf, int, int *)
 {
-  int m = 0;
-  for (int i = 0; i < n; i++)
-    for (int w = 0; w < comm_width; w++) buf[m++] = comm_array[list[i] * comm_width + w];
-  return m;
+  if (comm_width == 1) return pack_listed<1>(comm_array, 1, n, list, buf);
+  if (comm_width == 2) return pack_listed<2>(comm_array, 2, n, list, buf);
+  return pack_listed<0>(comm_array, comm_width, n, list, buf);
 }
 
 void FixPDBonds::unpack_forward_comm(int n, int first, double *buf)
 {
-  int m = 0;
-  for (int i = first; i < first + n; i++)
-    for (int w = 0; w < comm_width; w++) comm_array[i * comm_width + w] = buf[m++];
+  std::copy(buf, buf + (size_t) n * comm_width, comm_array + (size_t) first * comm_width);
 }
 
 int FixPDBonds::pack_reverse_comm(int n, int first, double *buf)
 {
-  int m = 0;
-  for (int i = first; i < first + n; i++)
-    for (int w = 0; w < comm_width; w++) buf[m++] = comm_array[i * comm_width + w];
-  return m;
+  const double *from = comm_array + (size_t) first * comm_width;
+  std::copy(from, from + (size_t) n * comm_width, buf);
+  return n * comm_width;
 }
 
 void FixPDBonds::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  int m = 0;
-  for (int i = 0; i < n; i++)
-    for (int w = 0; w < comm_width; w++, m++) {
-      double &a = comm_array[list[i] * comm_width + w];
-      a = comm_max ? MAX(a, buf[m]) : a + buf[m];
-    }
+  if (comm_width == 1) unpack_listed<1>(comm_array, 1, n, list, buf, comm_max);
+  else if (comm_width == 2) unpack_listed<2>(comm_array, 2, n, list, buf, comm_max);
+  else unpack_listed<0>(comm_array, comm_width, n, list, buf, comm_max);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -66,9 +66,10 @@ class LawLegacy : public PDFailureLaw {
     }
     const int nall = atom->nlocal + atom->nghost;
     for (int i = 0; i < nall; i++) s0_new[i] = -INFINITY;
-    params = {table(S00), table(ALPHA), atom->s0, pd_failure_floor(atom->s0, nall), s0_new};
+    params = {table(S00), table(ALPHA), atom->s0, pd_failure_floor(atom->s0, nall)};
     return &params;
   }
+  double *notes() override { return s0_new; }
 
   // each atom's s0 for the next step: PERI's max over its intact bonds
   void after_evaluation() override

@@ -144,20 +144,34 @@ int main(void)
     l.natoms = 8;
     lattice_free(&l);
   }
+  /* The screens' floor: the smallest value wherever it sits (the running
+   * minima side by side, and the tail), NaNs skipped, +inf for none. */
+  {
+    enum { N = 21 };
+    double v[N];
+    int right = 1;
+    for (int n = 0; n <= N; n++)
+      for (int at = 0; at < n; at++) {
+        for (int a = 0; a < n; a++) v[a] = a == at ? -2.0 - a : (a % 3 ? NAN : 1.0 + a);
+        right &= pd_failure_floor(v, n) == -2.0 - at;
+      }
+    check_true("floor: the smallest of n = 1..21 values, at every position, NaNs skipped", right);
+    check_true("floor of no values: +inf", isinf(pd_failure_floor(v, 0)) && pd_failure_floor(v, 0) > 0.0);
+  }
   /* The laws' screens (pd_law_<name>_ahead, the vectorized pass's only
    * question): yes whenever the exact tests say yes, and no for some bonds
    * (else they screen nothing). Random atoms' s0 and crit, stretches and
    * energies around the thresholds. */
   {
     enum { NATOM = 16, NBOND = 20000 };
-    double s0_atom[NATOM], crit[NATOM], s0_new[NATOM];
+    double s0_atom[NATOM], crit[NATOM];
     srand(7);
     for (int a = 0; a < NATOM; a++) {
       s0_atom[a] = 0.004 + 0.002 * rand() / RAND_MAX;
       crit[a] = 1.0 + rand() / (double) RAND_MAX;
     }
     const double s00[4] = {0, 0, 0, 0.005}, alpha[4] = {0, 0, 0, 0.25}, gc[4] = {0, 0, 0, 2.0};
-    const pd_law_legacy legacy = {s00, alpha, s0_atom, pd_failure_floor(s0_atom, NATOM), s0_new};
+    const pd_law_legacy legacy = {s00, alpha, s0_atom, pd_failure_floor(s0_atom, NATOM)};
     const pd_law_energy energy = {crit, pd_failure_floor(crit, NATOM), gc};
     const pd_failure fl = {.law = PD_FAIL_LEGACY, .params = &legacy}, fe = {.law = PD_FAIL_ENERGY, .params = &energy};
     int missed = 0, screened_legacy = 0, screened_energy = 0;

@@ -44,7 +44,7 @@ typedef int (*pd_breaks_after_fn)(const pd_failure *f, const pd_bond *bd, double
 typedef int (*pd_may_break_fn)(const pd_failure *f, const pd_bond *bd, double eps,
                                const pd_bond_force *bf);
 typedef double (*pd_law_notes_fn)(const pd_failure *f, const pd_bond *bd);
-typedef void (*pd_law_note_fn)(const pd_failure *f, int atom, double value);
+typedef void (*pd_law_note_fn)(double *note_atom, int atom, double value);
 
 /* Four doubles summed lane by lane (the 4th is padding): one 4-wide add
  * where the compiler has vector types (GCC, clang), scalar ones otherwise;
@@ -118,7 +118,8 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
               double *restrict reaction, double fi[4], pd_bond *bd, int idx, pd_break_sums *sums,
               pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-              pd_law_notes_fn notes, pd_law_note_fn note, double *row_note, int weighted,
+              pd_law_notes_fn notes, pd_law_note_fn note, double *restrict note_atom,
+              double *row_note, int weighted,
               int tallied, int failing, int directed)
 {
   pd_bond_load(bd, b, type, trow, x, xi, fail, idx, weighted, failing, 1);
@@ -161,7 +162,7 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   }
   if (failing && !bd->broken) {
     const double value = notes(fail, bd);
-    note(fail, bd->j, value);
+    note(note_atom, bd->j, value);
     *row_note = value > *row_note ? value : *row_note;
     if (breaks_after(fail, bd, eps))
       pd_break_bond(fail, sums, bd, bf.release_i, bf.release_j, vi, vj, 0);
@@ -243,6 +244,9 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
   pd_break_sums sums = {0.0, 0.0, 0};
   const int chunked = !directed && !(tallied && tally->eatom);
   memset(reaction, 0, sizeof(double) * 4 * (size_t) nall);
+  /* (a local: read through fail, it was loaded again after every
+   * reaction store) */
+  double *restrict note_atom = failing ? fail->note_atom : NULL;
   pd_bond bd;
   double g[7 * PD_CHUNK];
   for (int i = 0; i < b->nowner; i++) {
@@ -275,7 +279,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
           pd_add4(reaction + 4 * (ptrdiff_t) j, -vi, gx, gy, gz);
           if (failing) {
             const double value = g[3 * PD_CHUNK + k];
-            note(fail, j, value);
+            note(note_atom, j, value);
             rn = value > rn ? value : rn;
           }
         }
@@ -295,11 +299,12 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       }
       for (int k = 0; k < m; k++)
         pd_force_bond(b, type, trow, x, xi, vol, reaction, fi, &bd, row + k0 + k, &sums, tally,
-                      fail, mat, strain, force, breaks_now, breaks_after, notes, note, &row_note,
+                      fail, mat, strain, force, breaks_now, breaks_after, notes, note, note_atom,
+                      &row_note,
                       weighted, tallied, failing, directed);
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
-    if (failing) note(fail, i, row_note);
+    if (failing) note(note_atom, i, row_note);
   }
   for (int a = 0; a < nall; a++)
     for (int c = 0; c < 3; c++) f[3 * a + c] += reaction[4 * a + c];

@@ -53,9 +53,9 @@ static inline double pd_law_energy_notes(const pd_failure *f, const pd_bond *bd)
   return 0.0;
 }
 
-static inline void pd_law_energy_note(const pd_failure *f, int atom, double value)
+static inline void pd_law_energy_note(double *at, int atom, double value)
 {
-  (void) f, (void) atom, (void) value;
+  (void) at, (void) atom, (void) value;
 }
 
 /* Calibration. s_c(xi) = beta omega |xi|^-2 with omega the influence

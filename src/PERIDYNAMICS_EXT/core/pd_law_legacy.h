@@ -11,9 +11,9 @@ typedef struct pd_law_legacy {
   const double *alpha;    /* per type pair */
   const double *s0_atom;  /* per atom s0 of the previous step (owned + ghost) */
   double s0_floor;        /* the smallest of them */
-  double *s0_new;         /* per atom new s0: a max over both ends, -inf where
-                             no intact bond was seen (owned + ghost) */
 } pd_law_legacy;
+/* Its notes (pd_failure.note_atom) are each atom's new s0: -inf where no
+ * intact bond was seen. */
 
 static inline int pd_law_legacy_now(const pd_failure *f, const pd_bond *bd, double eps,
                                     const pd_bond_force *bf)
@@ -51,11 +51,10 @@ static inline double pd_law_legacy_notes(const pd_failure *f, const pd_bond *bd)
 
 /* (a max without a branch: the candidates of an unstrained block differ
  * by round-off, and a branch on them is a coin toss) */
-static inline void pd_law_legacy_note(const pd_failure *f, int atom, double cand)
+static inline void pd_law_legacy_note(double *at, int atom, double cand)
 {
-  const pd_law_legacy *p = (const pd_law_legacy *) f->params;
-  const double s0 = p->s0_new[atom];
-  p->s0_new[atom] = cand > s0 ? cand : s0;
+  const double s0 = at[atom];
+  at[atom] = cand > s0 ? cand : s0;
 }
 
 #endif
