@@ -20,6 +20,7 @@
 #include "pd_failure_law.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -846,16 +847,18 @@ double *PairPD::reactions()
   return reaction;
 }
 
-// The per-atom energy one evaluation dissipates (owned + ghost), zeroed.
+// The per-atom energy one evaluation dissipates (owned + ghost). It is zero
+// between evaluations: book_released clears what it booked, so that the
+// steps in which nothing breaks do not clear it (only a bond that breaks
+// writes it, and all ranks book when one breaks a bond).
 double *PairPD::zero_released()
 {
   if (atom->nmax > nreleased) {
     nreleased = atom->nmax;
     memory->destroy(released);
     memory->create(released, nreleased, "pair:released");
+    std::fill(released, released + nreleased, 0.0);
   }
-  const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) released[i] = 0.0;
   return released;
 }
 
@@ -865,6 +868,7 @@ void PairPD::book_released()
   bonds->sum_to_owners(released);
   double *dissipated = bonds->dissipated_atom();
   for (int i = 0; i < atom->nlocal; i++) dissipated[i] += released[i];
+  std::fill(released, released + atom->nlocal + atom->nghost, 0.0);
 }
 
 // Book what one evaluation broke: totals on this rank, and the per-atom
