@@ -394,6 +394,7 @@ pd_bond_view FixPDBonds::view() const
   v.far = far ? far[0] : nullptr;
   v.len0 = r0 ? r0[0] : nullptr;
   v.weight = use_weights && weight ? weight[0] : nullptr;
+  v.weight_horizon = 0.0;    // (the pair style knows when it may be set)
   return v;
 }
 

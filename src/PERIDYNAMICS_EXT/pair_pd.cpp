@@ -772,6 +772,7 @@ void PairPD::begin_evaluation(Evaluation &e)
 {
   if (timed_since == 0.0) timed_since = MPI_Wtime();
   e.view = bonds->view();
+  e.view.weight_horizon = inverse_weight_horizon();
   e.tally = pd_tally{};
   e.tally.eatom = eflag_atom ? eatom : nullptr;
   e.fails = failing();
@@ -786,6 +787,7 @@ void PairPD::begin_evaluation(Evaluation &e)
 void PairPD::begin_pass(Evaluation &e)
 {
   e.view = bonds->view();
+  e.view.weight_horizon = inverse_weight_horizon();
   e.tally = pd_tally{};
   e.fails = bonds->fracture().has_broken();
   e.fail = e.fails ? recontact_state() : pd_failure{};

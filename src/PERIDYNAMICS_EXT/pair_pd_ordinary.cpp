@@ -120,6 +120,19 @@ PDFamilySpec::Weight PairPDOrdinary::weight_rule() const
   return [kind, d, partial](const PDBondGeometry &g) { return influence_at(kind, d, g) * partial(g); };
 }
 
+// The default 3D weight, 1/|xi| influence with point quadrature, is the
+// horizon over the bond's length (pd_influence, and the cell's whole
+// volume): the loops compute it when all type pairs share one horizon.
+double PairPDOrdinary::inverse_weight_horizon() const
+{
+  if (legacy || partial_volumes() || influence != PD_INFLUENCE_INVERSE) return 0.0;
+  const double h = horizon(1, 1);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++)
+      if (horizon(i, j) != h) return 0.0;
+  return h > 0.0 ? h : 0.0;
+}
+
 // N = d / m: m is the atom's own weighted volume with the surface
 // correction, else that of a complete family of its type (T14 6.1.3: no
 // renormalization at free surfaces; surface atoms are softer).

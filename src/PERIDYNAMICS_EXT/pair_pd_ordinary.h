@@ -49,6 +49,7 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   int parse_setting(int, char **, int) override;
   void check_coeff(int, int) override;
   int uses_weights() const override { return 1; }
+  double inverse_weight_horizon() const override;
   PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;
   void tangent_sum(double *, double *) override;

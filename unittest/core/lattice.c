@@ -58,7 +58,7 @@ void lattice_free(lattice *l)
 
 pd_bond_view lattice_view(const lattice *l)
 {
-  pd_bond_view v = {l->natoms, l->stride, l->count, l->far, l->len0, l->weight};
+  pd_bond_view v = {l->natoms, l->stride, l->count, l->far, l->len0, l->weight, 0.0};
   return v;
 }
 

@@ -3,9 +3,11 @@
 #include "check.h"
 #include "common.h"
 #include "model.h"
+#include "pd_ordinary.h"
 #include "pd_params.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 typedef struct {
   double lambda, mu, order;
@@ -219,6 +221,52 @@ int main(void)
     }
     lattice_free(&l);
     free(x);
+  }
+  /* The default 3D weight computed in the loops (pd_bond_view.weight_horizon:
+   * the horizon over |xi|) is the table's number: the dilatation sums and
+   * the forces are the same to the bit, in the vectorized passes (no
+   * tally) and bond by bond (per-atom energy), on a randomly displaced
+   * block. A horizon 1e-12 larger changes them: the loops take it. */
+  {
+    const double delta = 3.0001 * h;
+    lattice l = lattice_make(3, 7, h, delta, PD_INFLUENCE_INVERSE);
+    const int n = l.natoms;
+    double *x = malloc(sizeof(double) * 3 * n), *ab = malloc(sizeof(double) * 2 * n);
+    double *sum[3], *f[3];
+    unsigned seed = 11;
+    for (int a = 0; a < 3 * n; a++) x[a] = l.x0[a] + 1e-3 * h * urand(&seed);
+    int same_sums = 1, same_forces = 1, moved = 1;
+    for (int per_atom = 0; per_atom < 2; per_atom++) {
+      const double horizons[3] = {0.0, delta, delta * (1.0 + 1e-12)};
+      for (int w = 0; w < 3; w++) {
+        sum[w] = calloc(n, sizeof(double));
+        f[w] = calloc(3 * (size_t) n, sizeof(double));
+        double *eatom = calloc(n, sizeof(double));
+        pd_tally t = {0};
+        t.eatom = eatom;
+        pd_bond_view v = lattice_view(&l);
+        v.weight_horizon = horizons[w];
+        pd_ordinary_state st = {0.5, sum[w], ab, NULL};
+        const pd_loop L = {&v, l.type, 1, x, l.vol, f[w], per_atom ? &t : NULL, NULL, l.reaction, n};
+        pd_ordinary_dilatation(&L, &st);
+        for (int a = 0; a < n; a++) {
+          ab[2 * a] = 1e22 * sum[w][a];
+          ab[2 * a + 1] = 3e13;
+        }
+        pd_ordinary_forces(&L, &st);
+        free(eatom);
+      }
+      same_sums &= memcmp(sum[0], sum[1], sizeof(double) * n) == 0;
+      same_forces &= memcmp(f[0], f[1], sizeof(double) * 3 * n) == 0;
+      moved &= memcmp(f[0], f[2], sizeof(double) * 3 * n) != 0 && memcmp(sum[0], sum[2], sizeof(double) * n) != 0;
+      for (int w = 0; w < 3; w++) free(sum[w]), free(f[w]);
+    }
+    check_true("weight horizon / |xi| computed: dilatation sums equal the table's to the bit", same_sums);
+    check_true("weight horizon / |xi| computed: forces equal the table's to the bit", same_forces);
+    check_true("a horizon 1e-12 larger changes the sums and the forces (the loops use it)", moved);
+    lattice_free(&l);
+    free(x);
+    free(ab);
   }
   return check_summary();
 }

@@ -80,6 +80,14 @@ PD_INLINE void pd_add4(double *restrict p, double s, double a0, double a1, doubl
   pd_sum4_store(p, pd_sum4_axpy(pd_sum4_load(p), s, a0, a1, a2));
 }
 
+/* How a loop takes each bond's weight: 1, the table, or weight_horizon /
+ * |xi| (pd_bond_view). */
+enum { PD_WEIGHT_ONE, PD_WEIGHT_TABLE, PD_WEIGHT_INVERSE };
+PD_INLINE int pd_weight_mode(const pd_bond_view *b)
+{
+  return b->weight_horizon > 0.0 ? PD_WEIGHT_INVERSE : b->weight ? PD_WEIGHT_TABLE : PD_WEIGHT_ONE;
+}
+
 /* Slot idx of atom bd->i's row: its far end, types, weight and reference
  * length (intact unless 'failing'; a reference walk, not 'current', takes
  * a broken bond with its length); with 'current' also its current
@@ -94,7 +102,8 @@ pd_bond_load(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict ty
   bd->idx = idx;
   bd->tj = type ? type[j] : 1;
   bd->tij = trow + bd->tj;
-  bd->w = weighted ? b->weight[idx] : 1.0;
+  bd->w = weighted == PD_WEIGHT_INVERSE ? b->weight_horizon / fabs(b->len0[idx])
+         : weighted ? b->weight[idx] : 1.0;
   bd->broken = 0;
   if (failing) bd->r0 = pd_bond_reference(fail, b->len0[idx], bd->i, j, &bd->broken);
   else if (current) bd->r0 = b->len0[idx];
@@ -336,21 +345,24 @@ typedef void (*pd_kernel)(const pd_loop *L, void *mat);
   PD_KERNEL_(prefix, strain, force, law, failing, 0, 0, directed)             \
   PD_KERNEL_(prefix, strain, force, law, failing, 0, 1, directed)             \
   PD_KERNEL_(prefix, strain, force, law, failing, 1, 0, directed)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 1, 1, directed)
+  PD_KERNEL_(prefix, strain, force, law, failing, 1, 1, directed)             \
+  PD_KERNEL_(prefix, strain, force, law, failing, 2, 0, directed)             \
+  PD_KERNEL_(prefix, strain, force, law, failing, 2, 1, directed)
 #define PD_KERNEL_ROW_(ID, law, prefix, failing)                                      \
   {prefix##_##law##_##failing##00, prefix##_##law##_##failing##01,                    \
-   prefix##_##law##_##failing##10, prefix##_##law##_##failing##11},
+   prefix##_##law##_##failing##10, prefix##_##law##_##failing##11,                    \
+   prefix##_##law##_##failing##20, prefix##_##law##_##failing##21},
 #define PD_FAILING_KERNELS_(ID, law, prefix, strain, force, directed) \
   PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, 1, directed)
 #define PD_FAILING_ROW_(ID, law, prefix) PD_KERNEL_ROW_(ID, law, prefix, 1)
 
 /* Defines prefix_kernels: row 0 for intact bonds only (nothing can be or
  * become broken), then one row per failure law of pd_laws.h; in each row
- * the four combinations of weights and tally. */
+ * the six combinations of weight mode (PD_WEIGHT_*) and tally. */
 #define PD_DEFINE_KERNELS_(prefix, strain, force, directed)                           \
   PD_KERNELS_OF_LAW_(NONE, none, prefix, strain, force, 0, directed)                  \
   PD_FAILURE_LAWS(PD_FAILING_KERNELS_, prefix, strain, force, directed)               \
-  static const pd_kernel prefix##_kernels[PD_NLAWS + 1][4] = {                       \
+  static const pd_kernel prefix##_kernels[PD_NLAWS + 1][6] = {                       \
       PD_KERNEL_ROW_(NONE, none, prefix, 0) PD_FAILURE_LAWS(PD_FAILING_ROW_, prefix)};
 #define PD_DEFINE_KERNELS(prefix, strain, force) PD_DEFINE_KERNELS_(prefix, strain, force, 0)
 /* The same for a material whose bond force is not along the bond (its
@@ -359,11 +371,11 @@ typedef void (*pd_kernel)(const pd_loop *L, void *mat);
   PD_DEFINE_KERNELS_(prefix, strain, force, 1)
 
 /* Run the kernel of a table that L asks for: its failure law (or none),
- * weights when the bond view has them, tally when L has one. */
-static inline void pd_run_kernel(const pd_kernel (*table)[4], const pd_loop *L, void *mat)
+ * the bond view's weight mode, tally when L has one. */
+static inline void pd_run_kernel(const pd_kernel (*table)[6], const pd_loop *L, void *mat)
 {
   const int row = L->fail ? 1 + (int) L->fail->law : 0;
-  table[row][(L->b->weight != NULL) * 2 + (L->tally != NULL)](L, mat);
+  table[row][pd_weight_mode(L->b) * 2 + (L->tally != NULL)](L, mat);
 }
 
 /* Sums over bonds onto both ends in the reference configuration:
@@ -401,14 +413,14 @@ typedef void (*pd_bond_strain_value_fn)(void *ctx, const pd_bond *bd, double eps
 PD_INLINE void
 pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si, int width,
                     const double xi[3], pd_bond *bd, int idx, void *mat, pd_strain_fn strain,
-                    pd_bond_strain_value_fn value, int failing)
+                    pd_bond_strain_value_fn value, int weighted, int failing)
 {
   const pd_bond_view *restrict b = L->b;
   /* value() writes all width entries of t; zeroing them only keeps the
    * compiler from doubting it */
   double t[PD_MAX_SUM_WIDTH];
   for (int c = 0; c < width; c++) t[c] = 0.0;
-  pd_bond_load(bd, b, NULL, 0, L->x, xi, L->fail, idx, b->weight != NULL, failing, 1);
+  pd_bond_load(bd, b, NULL, 0, L->x, xi, L->fail, idx, weighted, failing, 1);
   const double eps = strain(mat, bd);
   if (failing && pd_bond_inactive(L->fail, bd->broken, eps)) return;
   value(mat, bd, eps, t);
@@ -425,7 +437,7 @@ pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si,
 PD_INLINE int
 pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
                      double *restrict tb, void *mat, pd_strain_fn strain,
-                     pd_bond_strain_value_fn value, int failing)
+                     pd_bond_strain_value_fn value, int weighted, int failing)
 {
   const pd_bond_view *restrict b = L->b;
   int broken = 0;
@@ -433,7 +445,7 @@ pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int
     pd_bond bd;
     bd.i = i;
     bd.ti = 0;
-    broken |= pd_bond_load_ahead(&bd, b, NULL, 0, L->x, xi, row + k, b->weight != NULL, failing);
+    broken |= pd_bond_load_ahead(&bd, b, NULL, 0, L->x, xi, row + k, weighted, failing);
     value(mat, &bd, strain(mat, &bd), tb + k * width);
   }
   return broken;
@@ -447,8 +459,8 @@ pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int
  * pd_force_loop_on: a vectorizable pass computes the values, a scalar one
  * adds them in the order and with the arithmetic of bond by bond. */
 PD_INLINE void
-pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd_strain_fn strain,
-                pd_bond_strain_value_fn value, int failing)
+pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
+                   pd_strain_fn strain, pd_bond_strain_value_fn value, int weighted, int failing)
 {
   const pd_bond_view *restrict b = L->b;
   const double *restrict vol = L->vol;
@@ -464,7 +476,8 @@ pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd
     const double xi[3] = {L->x[3 * i], L->x[3 * i + 1], L->x[3 * i + 2]};
     for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
       const int m = n - k0 < PD_CHUNK ? n - k0 : PD_CHUNK;
-      if (!pd_current_sum_chunk(L, width, xi, i, row + k0, m, tb, mat, strain, value, failing)) {
+      if (!pd_current_sum_chunk(L, width, xi, i, row + k0, m, tb, mat, strain, value, weighted,
+                                failing)) {
         for (int k = 0; k < m; k++) {
           const int j = b->far[row + k0 + k];
           const double vj = vol[j];
@@ -478,9 +491,25 @@ pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd
       }
       for (int k = 0; k < m; k++)
         pd_current_sum_bond(L, sum, si, width, xi, &bd, row + k0 + k, mat, strain, value,
-                            failing);
+                            weighted, failing);
     }
     for (int c = 0; c < width; c++) sum[i * width + c] += si[c];
+  }
+}
+
+/* (one copy per weight mode, so that it is a constant in each) */
+PD_INLINE void
+pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd_strain_fn strain,
+                pd_bond_strain_value_fn value, int failing)
+{
+  switch (pd_weight_mode(L->b)) {
+  case PD_WEIGHT_INVERSE:
+    pd_current_sums_on(L, sum, width, mat, strain, value, PD_WEIGHT_INVERSE, failing);
+    break;
+  case PD_WEIGHT_TABLE:
+    pd_current_sums_on(L, sum, width, mat, strain, value, PD_WEIGHT_TABLE, failing);
+    break;
+  default: pd_current_sums_on(L, sum, width, mat, strain, value, PD_WEIGHT_ONE, failing); break;
   }
 }
 

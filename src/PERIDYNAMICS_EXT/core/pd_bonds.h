@@ -15,6 +15,12 @@ typedef struct pd_bond_view {
   const double *len0;    /* reference bond length |xi| */
   const double *weight;  /* per-bond quadrature weight (influence x partial
                             volume), or NULL when every weight is 1 */
+  /* > 0: every weight is weight_horizon / |xi| (the inverse influence with
+   * point quadrature, one horizon), and the force and current-sum loops
+   * compute it instead of loading it: the same number, and 8 bytes less
+   * per bond and pass to stream (pd/ordinary 64^3: 1.1x). 0: they load
+   * weight. */
+  double weight_horizon;
 } pd_bond_view;
 
 /* One bond as the bond loops (pd_bond_loop.h) hand it to a material and a

@@ -245,7 +245,7 @@ PD_DEFINE_KERNELS(any_damaged, strain_any, any_damaged)
 void pd_corr_forces(const pd_loop *L, const pd_corr_state *st)
 {
   const int damaged = st->damage != NULL;
-  const pd_kernel (*table)[4];
+  const pd_kernel (*table)[6];
   if (!st->extended) table = damaged ? classical_damaged_kernels : classical_intact_kernels;
   else if (st->order == 0.0) table = damaged ? log_damaged_kernels : log_intact_kernels;
   else table = damaged ? any_damaged_kernels : any_intact_kernels;

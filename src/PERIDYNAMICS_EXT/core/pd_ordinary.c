@@ -83,7 +83,7 @@ PD_DEFINE_KERNELS(any_cached, strain_cached, force_any)
 void pd_ordinary_forces(const pd_loop *L, const pd_ordinary_state *st)
 {
   const int kind = pd_order_kind(st->order), cached = st->strain != NULL;
-  const pd_kernel (*table)[4] = kind == PD_ORDER_HALF ? half_kernels
+  const pd_kernel (*table)[6] = kind == PD_ORDER_HALF ? half_kernels
       : kind == PD_ORDER_LOG ? (cached ? log_cached_kernels : log_computed_kernels)
                           : (cached ? any_cached_kernels : any_computed_kernels);
   pd_run_kernel(table, L, (void *) st);
