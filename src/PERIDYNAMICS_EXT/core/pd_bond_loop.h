@@ -102,12 +102,15 @@ pd_bond_load(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict ty
   bd->idx = idx;
   bd->tj = type ? type[j] : 1;
   bd->tij = trow + bd->tj;
-  bd->w = weighted == PD_WEIGHT_INVERSE ? b->weight_horizon / fabs(b->len0[idx])
-         : weighted ? b->weight[idx] : 1.0;
   bd->broken = 0;
   if (failing) bd->r0 = pd_bond_reference(fail, b->len0[idx], bd->i, j, &bd->broken);
   else if (current) bd->r0 = b->len0[idx];
   else bd->r0 = fabs(b->len0[idx]);
+  /* (the inverse weight through 1/|xi|, as pd_influence makes it: the
+   * reciprocal that the strain of m = 1/2 takes too, so one divide) */
+  const double inv_len0 = 1.0 / (failing || !current ? fabs(b->len0[idx]) : bd->r0);
+  bd->w = weighted == PD_WEIGHT_INVERSE ? b->weight_horizon * inv_len0
+         : weighted ? b->weight[idx] : 1.0;
   if (current) {
     bd->d[0] = x[3 * j] - xi[0];
     bd->d[1] = x[3 * j + 1] - xi[1];

@@ -12,10 +12,11 @@ static double constant(int dim, double r, double delta)
   return 1.0;
 }
 
+/* (through 1/r, as the bond loops compute it: pd_bond_view.weight_horizon) */
 static double inverse(int dim, double r, double delta)
 {
   (void) dim;
-  return delta / r;
+  return delta * (1.0 / r);
 }
 
 static double lps(int dim, double r, double delta)
