@@ -150,8 +150,8 @@ class PairPD : public Pair, public PDFamilySource {
   // in the log)
   virtual bool uses_coefficient(int) const { return true; }
   virtual int uses_weights() const { return legacy || partial_volumes(); }
-  // > 0: every bond's weight is this over its length, so that the force
-  // loops compute it (pd_bond_view.weight_horizon); 0: they load the table
+  // > 0: every bond's weight is this times 1/|xi|, so that the force loops
+  // compute it (pd_bond_view.weight_horizon); 0: they load the table
   virtual double inverse_weight_horizon() const { return 0.0; }
   // quadrature weight of a new bond (used only when uses_weights()), as a
   // function holding copies of the settings it needs: PERI's partial

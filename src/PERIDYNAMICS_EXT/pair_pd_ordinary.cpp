@@ -121,8 +121,8 @@ PDFamilySpec::Weight PairPDOrdinary::weight_rule() const
 }
 
 // The default 3D weight, 1/|xi| influence with point quadrature, is the
-// horizon over the bond's length (pd_influence, and the cell's whole
-// volume): the loops compute it when all type pairs share one horizon.
+// horizon times 1/|xi| (pd_influence, and the cell's whole volume): the
+// loops compute it when all type pairs share one horizon.
 double PairPDOrdinary::inverse_weight_horizon() const
 {
   if (legacy || partial_volumes() || influence != PD_INFLUENCE_INVERSE) return 0.0;

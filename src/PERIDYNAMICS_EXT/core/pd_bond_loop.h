@@ -80,8 +80,8 @@ PD_INLINE void pd_add4(double *restrict p, double s, double a0, double a1, doubl
   pd_sum4_store(p, pd_sum4_axpy(pd_sum4_load(p), s, a0, a1, a2));
 }
 
-/* How a loop takes each bond's weight: 1, the table, or weight_horizon /
- * |xi| (pd_bond_view). */
+/* How a loop takes each bond's weight: 1, the table, or weight_horizon
+ * times 1/|xi| (pd_bond_view). */
 enum { PD_WEIGHT_ONE, PD_WEIGHT_TABLE, PD_WEIGHT_INVERSE };
 PD_INLINE int pd_weight_mode(const pd_bond_view *b)
 {

@@ -15,7 +15,7 @@ typedef struct pd_bond_view {
   const double *len0;    /* reference bond length |xi| */
   const double *weight;  /* per-bond quadrature weight (influence x partial
                             volume), or NULL when every weight is 1 */
-  /* > 0: every weight is weight_horizon (1 / |xi|) (the inverse influence with
+  /* > 0: every weight is weight_horizon * (1 / |xi|) (the inverse influence with
    * point quadrature, one horizon), and the force and current-sum loops
    * compute it instead of loading it: the same number, and 8 bytes less
    * per bond and pass to stream (pd/ordinary 64^3: 1.1x). 0: they load
