@@ -171,7 +171,7 @@ void ComputePDAtom::dilatation(double *out)
   for (int i = 0; i < nall; i++) out[i] = 0.0;
   const double *weighted = bonds->weighted_volume();
   const pd_bond_view v = bonds->view();
-  pd_ordinary_state st = {0.5, out, nullptr, nullptr};
+  pd_ordinary_state st = {0.5, out, nullptr, nullptr, 0};
   pd_failure intact_only = {};    // broken bonds stretch freely: they do not count
   intact_only.recontact = 0;
   const pd_loop L = {&v, atom->type, atom->ntypes + 1, atom->x[0], atom->vfrac, nullptr, nullptr, &intact_only,

@@ -33,7 +33,7 @@ extern "C" {
 using namespace LAMMPS_NS;
 
 PairPDOrdinary::PairPDOrdinary(LAMMPS *lmp) :
-    PairPD(lmp, pd_ordinary_coefs, PD_ORD_NCOEFS), influence(-1), per_atom_norm(0), order(0.5),
+    PairPD(lmp, pd_ordinary_coefs, PD_ORD_NCOEFS), influence(-1), per_atom_norm(0), uniform_b(0), order(0.5),
     bulk_volume(nullptr), lambda_bar(nullptr), mu_bar(nullptr), strain(nullptr), nstrain(0)
 {
 }
@@ -138,7 +138,17 @@ double PairPDOrdinary::inverse_weight_horizon() const
 // renormalization at free surfaces; surface atoms are softer).
 double PairPDOrdinary::norm(int i) const
 {
-  const double m = per_atom_norm ? bonds->weighted_volume()[i] : bulk_volume[atom->type[i]];
+  return per_atom_norm ? norm_of(bonds->weighted_volume()[i]) : type_norm(atom->type[i]);
+}
+
+// N = d / m of a complete family of type t
+double PairPDOrdinary::type_norm(int t) const
+{
+  return norm_of(bulk_volume[t]);
+}
+
+double PairPDOrdinary::norm_of(double m) const
+{
   return m > 0.0 ? dim() / m : 0.0;
 }
 
@@ -162,6 +172,13 @@ void PairPDOrdinary::setup_run()
     lambda_bar[t] = l.lambda;
     mu_bar[t] = l.mu;
   }
+  // B = 2 mu_bar N (pd_ordinary_atom) is one number for all atoms when N is
+  // its type's and every type has the same: the force pass then gathers no
+  // far end's B
+  uniform_b = !per_atom_norm;
+  const double b1 = pd_ordinary_atom(lambda_bar[1], mu_bar[1], type_norm(1), 0.0).b;
+  for (int t = 2; t <= ntypes; t++)
+    if (pd_ordinary_atom(lambda_bar[t], mu_bar[t], type_norm(t), 0.0).b != b1) uniform_b = 0;
 }
 
 // Per-atom state in the bond store: the dilatation of owned atoms (compute
@@ -197,7 +214,7 @@ void PairPDOrdinary::compute(int eflag, int vflag)
     memory->destroy(strain);
     memory->create(strain, nstrain, "pair:strain");
   }
-  pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr};
+  pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr, uniform_b};
   pd_ordinary_dilatation(&e.L, &st);
   bonds->sum_to_owners(sum);
 

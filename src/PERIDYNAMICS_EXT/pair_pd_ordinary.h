@@ -37,6 +37,7 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
  protected:
   int influence;       // pd_influence_kind
   int per_atom_norm;   // surface correction: normalize by each atom's weighted volume
+  int uniform_b;       // B = 2 mu_bar N is one number for all atoms (setup_run)
   double order;        // Seth-Hill order m, the same for all types
   double *bulk_volume; // per type: weighted volume of a complete family
   double *lambda_bar, *mu_bar;    // per type: peridynamic Lame constants
@@ -61,6 +62,8 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   void setup_run() override;
   std::string family_settings() const override;
   double norm(int i) const;
+  double type_norm(int t) const;
+  double norm_of(double m) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -64,7 +64,7 @@ static double ordinary_run(const lattice *l, double lambda, double mu, double or
   /* use the per-bond strain cache on odd calls, so both paths are tested */
   static int calls;
   static const double unit_gc = 1.0; /* crit is beta N for the whole G_c */
-  pd_ordinary_state st = {order, sum, ab, (calls++ & 1) ? strain : NULL};
+  pd_ordinary_state st = {order, sum, ab, (calls++ & 1) ? strain : NULL, 0};
   const pd_law_energy energy = {crit, crit ? pd_failure_floor(crit, n) : 0.0, &unit_gc};
   if (fail && crit) fail->params = &energy;
   pd_tally t = {0};

@@ -246,7 +246,7 @@ int main(void)
         t.eatom = eatom;
         pd_bond_view v = lattice_view(&l);
         v.weight_horizon = horizons[w];
-        pd_ordinary_state st = {0.5, sum[w], ab, NULL};
+        pd_ordinary_state st = {0.5, sum[w], ab, NULL, 0};
         const pd_loop L = {&v, l.type, 1, x, l.vol, f[w], per_atom ? &t : NULL, NULL, l.reaction, n};
         pd_ordinary_dilatation(&L, &st);
         for (int a = 0; a < n; a++) {
@@ -267,6 +267,50 @@ int main(void)
     lattice_free(&l);
     free(x);
     free(ab);
+  }
+  /* One B for all atoms (pd_ordinary_state.uniform_b): the m = 1/2 force
+   * pass takes the owner's B for the far end's. With every B equal the
+   * forces are the same to the bit, vectorized and bond by bond; with B
+   * varying they differ, so the pass does take the flag. */
+  {
+    lattice l = lattice_make(3, 7, h, 3.0001 * h, PD_INFLUENCE_INVERSE);
+    const int n = l.natoms;
+    double *x = malloc(sizeof(double) * 3 * n), *ab = malloc(sizeof(double) * 2 * n);
+    double *sum = calloc(n, sizeof(double)), *f[2][2][2];
+    unsigned seed = 5;
+    for (int a = 0; a < 3 * n; a++) x[a] = l.x0[a] + 1e-3 * h * urand(&seed);
+    for (int varying = 0; varying < 2; varying++)
+      for (int per_atom = 0; per_atom < 2; per_atom++)
+        for (int uniform = 0; uniform < 2; uniform++) {
+          double *eatom = calloc(n, sizeof(double));
+          pd_tally t = {0};
+          t.eatom = eatom;
+          pd_bond_view v = lattice_view(&l);
+          f[varying][per_atom][uniform] = calloc(3 * (size_t) n, sizeof(double));
+          memset(sum, 0, sizeof(double) * n);
+          pd_ordinary_state st = {0.5, sum, ab, NULL, uniform};
+          const pd_loop L = {&v, l.type, 1, x, l.vol, f[varying][per_atom][uniform],
+                             per_atom ? &t : NULL, NULL, l.reaction, n};
+          pd_ordinary_dilatation(&L, &st);
+          for (int a = 0; a < n; a++) {
+            ab[2 * a] = 1e22 * sum[a];
+            ab[2 * a + 1] = 3e13 * (varying ? 1.0 + 0.1 * (a % 3) : 1.0);
+          }
+          pd_ordinary_forces(&L, &st);
+          free(eatom);
+        }
+    const size_t bytes = sizeof(double) * 3 * n;
+    check_true("one B for all atoms: forces equal the gathered B's to the bit (vectorized)",
+               memcmp(f[0][0][0], f[0][0][1], bytes) == 0);
+    check_true("one B for all atoms: forces equal the gathered B's to the bit (bond by bond)",
+               memcmp(f[0][1][0], f[0][1][1], bytes) == 0);
+    check_true("B varying: the flag changes the forces (the pass takes it)",
+               memcmp(f[1][0][0], f[1][0][1], bytes) != 0 && memcmp(f[1][1][0], f[1][1][1], bytes) != 0);
+    for (int a = 0; a < 8; a++) free(((double **) f)[a]);
+    lattice_free(&l);
+    free(x);
+    free(ab);
+    free(sum);
   }
   return check_summary();
 }

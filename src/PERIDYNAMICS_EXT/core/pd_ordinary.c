@@ -27,11 +27,11 @@ const pd_coef pd_ordinary_coefs[PD_ORD_NCOEFS] = {
  * stored B/2 w eps^2 and released w eps (A + B eps / 2) at each end, per
  * partner volume */
 PD_INLINE pd_bond_force
-ordinary_bond(int kind, const pd_ordinary_state *st, const pd_bond *bd, double eps)
+ordinary_bond(int kind, int uniform_b, const pd_ordinary_state *st, const pd_bond *bd, double eps)
 {
   const double *ab = st->ab;
   const double ai = ab[2 * bd->i], bi = ab[2 * bd->i + 1];
-  const double aj = ab[2 * bd->j], bj = ab[2 * bd->j + 1];
+  const double aj = ab[2 * bd->j], bj = uniform_b ? bi : ab[2 * bd->j + 1];
   const double w = bd->w, we2 = 0.5 * w * eps * eps;
   pd_bond_force bf;
   bf.tl = (ai + aj + (bi + bj) * eps) * w *
@@ -51,7 +51,7 @@ ordinary_bond(int kind, const pd_ordinary_state *st, const pd_bond *bd, double e
   }                                                                                       \
   static inline pd_bond_force force_##name(void *st, const pd_bond *bd, double eps)       \
   {                                                                                       \
-    return ordinary_bond(KIND, (const pd_ordinary_state *) st, bd, eps);                  \
+    return ordinary_bond(KIND, 0, (const pd_ordinary_state *) st, bd, eps);               \
   }
 ORDER_HOOKS(PD_ORDER_HALF, half)
 ORDER_HOOKS(PD_ORDER_LOG, log)
@@ -73,7 +73,15 @@ static inline double strain_cached(void *st, const pd_bond *bd)
   return ((const pd_ordinary_state *) st)->strain[bd->idx];
 }
 
+/* m = 1/2 with one B for all atoms: one gather less per bond (1.07x at
+ * 32^3, 1.1x at 64^3) */
+static inline pd_bond_force force_half_uniform(void *st, const pd_bond *bd, double eps)
+{
+  return ordinary_bond(PD_ORDER_HALF, 1, (const pd_ordinary_state *) st, bd, eps);
+}
+
 PD_DEFINE_KERNELS(half, strain_half, force_half)
+PD_DEFINE_KERNELS(half_uniform, strain_half, force_half_uniform)
 PD_DEFINE_KERNELS(log_computed, strain_log, force_log)
 PD_DEFINE_KERNELS(log_cached, strain_cached, force_log)
 PD_DEFINE_KERNELS(any_computed, strain_any, force_any)
@@ -83,7 +91,7 @@ PD_DEFINE_KERNELS(any_cached, strain_cached, force_any)
 void pd_ordinary_forces(const pd_loop *L, const pd_ordinary_state *st)
 {
   const int kind = pd_order_kind(st->order), cached = st->strain != NULL;
-  const pd_kernel (*table)[6] = kind == PD_ORDER_HALF ? half_kernels
+  const pd_kernel (*table)[6] = kind == PD_ORDER_HALF ? (st->uniform_b ? half_uniform_kernels : half_kernels)
       : kind == PD_ORDER_LOG ? (cached ? log_cached_kernels : log_computed_kernels)
                           : (cached ? any_cached_kernels : any_computed_kernels);
   pd_run_kernel(table, L, (void *) st);

@@ -37,6 +37,9 @@ typedef struct pd_ordinary_state {
   double *strain;  /* per-bond scratch laid out as the bonds, or NULL: for
                       m != 1/2 the dilatation pass stores each bond's strain
                       there and the force pass reuses it (one log per bond) */
+  int uniform_b;   /* every atom's B is the same (no surface correction, one
+                      B for all types): the m = 1/2 force pass takes the
+                      owner's for the far end's instead of gathering it */
 } pd_ordinary_state;
 
 /* Dilatation sums: st->sum[i] += w eps V_j, st->sum[j] += w eps V_i.
