@@ -771,8 +771,7 @@ pd_failure PairPD::recontact_state()
 void PairPD::begin_evaluation(Evaluation &e)
 {
   if (timed_since == 0.0) timed_since = MPI_Wtime();
-  e.view = bonds->view();
-  e.view.weight_horizon = inverse_weight_horizon();
+  e.view = loop_view();
   e.tally = pd_tally{};
   e.tally.eatom = eflag_atom ? eatom : nullptr;
   e.fails = failing();
@@ -784,10 +783,18 @@ void PairPD::begin_evaluation(Evaluation &e)
          atom->nlocal + atom->nghost};
 }
 
+// The bonds as this style's loops walk them: the store's view, with the
+// weights the loops may compute themselves.
+pd_bond_view PairPD::loop_view() const
+{
+  pd_bond_view v = bonds->view();
+  v.weight_horizon = inverse_weight_horizon();
+  return v;
+}
+
 void PairPD::begin_pass(Evaluation &e)
 {
-  e.view = bonds->view();
-  e.view.weight_horizon = inverse_weight_horizon();
+  e.view = loop_view();
   e.tally = pd_tally{};
   e.fails = bonds->fracture().has_broken();
   e.fail = e.fails ? recontact_state() : pd_failure{};

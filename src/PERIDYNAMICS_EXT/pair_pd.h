@@ -236,6 +236,7 @@ class PairPD : public Pair, public PDFamilySource {
     Evaluation &operator=(const Evaluation &) = delete;
   };
   void begin_evaluation(Evaluation &e);
+  pd_bond_view loop_view() const;
   // the same for a pass that computes no force (pd_tangent.h): the
   // bonds, and which broken bonds push
   void begin_pass(Evaluation &e);

@@ -306,7 +306,9 @@ int main(void)
                memcmp(f[0][1][0], f[0][1][1], bytes) == 0);
     check_true("B varying: the flag changes the forces (the pass takes it)",
                memcmp(f[1][0][0], f[1][0][1], bytes) != 0 && memcmp(f[1][1][0], f[1][1][1], bytes) != 0);
-    for (int a = 0; a < 8; a++) free(((double **) f)[a]);
+    for (int varying = 0; varying < 2; varying++)
+      for (int per_atom = 0; per_atom < 2; per_atom++)
+        for (int uniform = 0; uniform < 2; uniform++) free(f[varying][per_atom][uniform]);
     lattice_free(&l);
     free(x);
     free(ab);

@@ -108,9 +108,10 @@ pd_bond_load(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict ty
   else bd->r0 = fabs(b->len0[idx]);
   /* (the inverse weight through 1/|xi|, as pd_influence makes it: the
    * reciprocal that the strain of m = 1/2 takes too, so one divide) */
-  const double inv_len0 = 1.0 / (failing || !current ? fabs(b->len0[idx]) : bd->r0);
-  bd->w = weighted == PD_WEIGHT_INVERSE ? b->weight_horizon * inv_len0
-         : weighted ? b->weight[idx] : 1.0;
+  if (weighted == PD_WEIGHT_INVERSE)
+    bd->w = b->weight_horizon * (1.0 / (failing || !current ? fabs(b->len0[idx]) : bd->r0));
+  else
+    bd->w = weighted ? b->weight[idx] : 1.0;
   if (current) {
     bd->d[0] = x[3 * j] - xi[0];
     bd->d[1] = x[3 * j + 1] - xi[1];
