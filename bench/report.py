@@ -29,7 +29,7 @@ BLOCK_STEPS = 200
 # (each effect next to its baseline, so that the two see about the same load)
 BLOCK_STYLES = [
     "peri_pmb", "pd_bond", "pd_bond_fail_stretch", "pd_bond_contact", "pd_bond_microplastic",
-    "pd_bond_legacy", "pd_bond_legacy_fail",
+    "pd_bond_legacy", "pd_bond_legacy_fail", "pd_bond_legacy_fail_alpha",
     "peri_lps", "pd_ordinary", "pd_ordinary_fail_stretch", "pd_ordinary_fail_energy",
     "pd_ordinary_contact", "pd_ordinary_m0", "pd_ordinary_m-1", "pd_ordinary_legacy",
     "pd_corr_classical", "pd_corr_j2", "pd_corr_extended",
@@ -52,6 +52,7 @@ EFFECTS = [
     ("nonlinear strain", "pd_ordinary_m-1", "pd_ordinary", None),
     ("failure", "pd_bond_fail_stretch", "pd_bond", 1.2),
     ("failure", "pd_bond_legacy_fail", "pd_bond_legacy", 1.2),
+    ("failure", "pd_bond_legacy_fail_alpha", "pd_bond_legacy", 1.2),
     ("failure", "pd_ordinary_fail_stretch", "pd_ordinary", 1.2),
     ("failure", "pd_ordinary_fail_energy", "pd_ordinary", 1.2),
     ("contact", "pd_bond_contact", "pd_bond", 1.05),

@@ -180,6 +180,7 @@ class FixPDBonds : public Fix {
   // the blow-up guard (fix_pd_bonds_guard.cpp)
   double guard_step;        // the largest distance an atom may move in one step
   void guard(bool forces_only);
+  static bool guard_screen(const double *f, const double *v, int n, double vmax2);
   std::string blow_up(int i, const char *what, double value);
   bigint damaged;           // stored bond records found damaged (restart, exchange)
   bigint damaged_example;   // the count one of them claimed

@@ -20,6 +20,7 @@
 #include "pd_error.h"
 #include "update.h"
 
+#include <cfloat>
 #include <cmath>
 
 using namespace LAMMPS_NS;
@@ -36,21 +37,39 @@ void FixPDBonds::end_of_step()
 }
 
 // Every rank checks its atoms; the first fault's message reaches the log
-// through one collective call (pd_error.h) per step.
+// through one collective call (pd_error.h) per step. A branch-free screen
+// over the contiguous arrays comes first (the compiler vectorizes it: 1% of
+// a pd/ordinary step at 64^3 with the atom by atom loop); only a rank that
+// sees a fault walks its atoms to name the first.
 void FixPDBonds::guard(bool forces_only)
 {
   if (!serving) return;
   double **f = atom->f, **v = atom->v;
-  const double vmax = guard_step / update->dt, vmax2 = vmax * vmax;
+  const int nlocal = atom->nlocal;
+  const double vmax = guard_step / update->dt, vmax2 = forces_only ? INFINITY : vmax * vmax;
   std::string fault;
-  for (int i = 0; i < atom->nlocal && fault.empty(); i++) {
-    const double f2 = f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2];
-    if (!std::isfinite(f2)) fault = blow_up(i, "force", f2);
-    if (forces_only || !fault.empty()) continue;
-    const double v2 = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
-    if (!(v2 <= vmax2)) fault = blow_up(i, "speed", sqrt(v2));
-  }
+  if (nlocal > 0 && !guard_screen(f[0], v[0], nlocal, vmax2))
+    for (int i = 0; i < nlocal && fault.empty(); i++) {
+      const double f2 = f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2];
+      if (!std::isfinite(f2)) fault = blow_up(i, "force", f2);
+      if (forces_only || !fault.empty()) continue;
+      const double v2 = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
+      if (!(v2 <= vmax2)) fault = blow_up(i, "speed", sqrt(v2));
+    }
   pd_error_collective(lmp, fault);
+}
+
+// True when every |f|^2 is finite and every |v|^2 at most vmax2 (n atoms,
+// 3 values each); NaN fails both tests.
+bool FixPDBonds::guard_screen(const double *f, const double *v, int n, double vmax2)
+{
+  int bad = 0;
+  for (int k = 0; k < 3 * n; k += 3) {
+    const double f2 = f[k] * f[k] + f[k + 1] * f[k + 1] + f[k + 2] * f[k + 2];
+    const double v2 = v[k] * v[k] + v[k + 1] * v[k + 1] + v[k + 2] * v[k + 2];
+    bad |= !(f2 <= DBL_MAX) | !(v2 <= vmax2);
+  }
+  return !bad;
 }
 
 // What went wrong where; a bond of zero length at this rank is the usual

@@ -2,7 +2,9 @@
    PERIDYNAMICS_EXT: 'fail legacy <s00> <alpha>', LAMMPS PERI's rule in
    legacy mode (the bond test: core/pd_law_legacy.h). Each atom carries its
    s0 (atom->s0, as PERI): the largest s00 - alpha stretch over its intact
-   bonds of the previous step.
+   bonds of the previous step. With alpha 0 and one s00 for all type pairs
+   that is s00 for every atom, PERI's value too: the law then takes no
+   notes of the bonds (1.16x -> 1.0x of the run without the law).
 ------------------------------------------------------------------------- */
 
 #include "pd_failure_law.h"
@@ -57,8 +59,34 @@ class LawLegacy : public PDFailureLaw {
                  "pair style keyword", style(), i, j);
   }
 
+  // alpha 0 and one s00 for all type pairs: every atom's s0 is s00
+  void setup_run() override
+  {
+    fixed = true;
+    s00 = value(S00, 1, 1);
+    const int ntypes = atom->ntypes;
+    for (int ti = 1; ti <= ntypes; ti++)
+      for (int tj = 1; tj <= ntypes; tj++)
+        fixed = fixed && &law_of(ti, tj) == this && value(ALPHA, ti, tj) == 0.0 &&
+            value(S00, ti, tj) == s00;
+  }
+
+  void report() const override
+  {
+    if (fixed)
+      utils::logmesg(lmp, "{}: fail legacy: alpha 0 and s00 {} for all type pairs: every atom's s0 "
+                     "is s00, no notes per bond\n", style(), s00);
+    else
+      utils::logmesg(lmp, "{}: fail legacy: each atom's s0 from its bonds' stretch every step "
+                     "(PERI's s00 - alpha stretch)\n", style());
+  }
+
   const void *evaluation() override
   {
+    if (fixed) {
+      params = {table(S00), table(ALPHA), atom->s0, pd_failure_floor(atom->s0, atom->nlocal + atom->nghost)};
+      return &params;
+    }
     if (atom->nmax > nmax) {
       nmax = atom->nmax;
       memory->destroy(s0_new);
@@ -69,17 +97,23 @@ class LawLegacy : public PDFailureLaw {
     params = {table(S00), table(ALPHA), atom->s0, pd_failure_floor(atom->s0, nall)};
     return &params;
   }
-  double *notes() override { return s0_new; }
+  double *notes() override { return fixed ? nullptr : s0_new; }
 
   // each atom's s0 for the next step: PERI's max over its intact bonds
   void after_evaluation() override
   {
+    if (fixed) {
+      for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = s00;
+      return;
+    }
     bonds()->max_to_owners(s0_new);
     for (int i = 0; i < atom->nlocal; i++) atom->s0[i] = std::isinf(s0_new[i]) ? DBL_MAX : s0_new[i];
   }
 
  private:
   pd_law_legacy params;
+  bool fixed = false;          // every atom's s0 is s00 (setup_run) ...
+  double s00 = 0.0;            // ... this one
   double *s0_new = nullptr;    // per atom new s0 (owned + ghost)
   int nmax = 0;
 };

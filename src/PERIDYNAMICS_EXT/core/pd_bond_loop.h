@@ -67,6 +67,12 @@ PD_INLINE pd_sum4 pd_sum4_axpy(pd_sum4 acc, double s, double a0, double a1, doub
   return acc;
 }
 #endif
+PD_INLINE double pd_sum4_lane(pd_sum4 v, int c)
+{
+  double a[4];
+  memcpy(a, &v, sizeof a);
+  return a[c];
+}
 PD_INLINE pd_sum4 pd_sum4_load(const double *p)
 {
   pd_sum4 v;
@@ -128,7 +134,7 @@ pd_bond_load(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict ty
 PD_INLINE void
 pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow,
               const double *restrict x, const double xi[3], const double *restrict vol,
-              double *restrict reaction, double fi[4], pd_bond *bd, int idx, pd_break_sums *sums,
+              double *restrict reaction, pd_sum4 *fi, pd_bond *bd, int idx, pd_break_sums *sums,
               pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
               pd_law_notes_fn notes, pd_law_note_fn note, double *restrict note_atom,
@@ -155,7 +161,7 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   double fij[3];
   const double tl = directed ? 0.0 : share * bf.tl;
   for (int c = 0; c < 3; c++) fij[c] = directed ? share * bf.v[c] : tl * bd->d[c];
-  pd_add4(fi, vj, fij[0], fij[1], fij[2]);
+  *fi = pd_sum4_axpy(*fi, vj, fij[0], fij[1], fij[2]);
   pd_add4(reaction + 4 * (ptrdiff_t) j, -vi, fij[0], fij[1], fij[2]);
   if (tallied) {
     /* a breaking bond's energy is booked as dissipated instead */
@@ -174,9 +180,11 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
     }
   }
   if (failing && !bd->broken) {
-    const double value = notes(fail, bd);
-    note(note_atom, bd->j, value);
-    *row_note = value > *row_note ? value : *row_note;
+    if (note_atom) {
+      const double value = notes(fail, bd);
+      note(note_atom, bd->j, value);
+      *row_note = value > *row_note ? value : *row_note;
+    }
     if (breaks_after(fail, bd, eps))
       pd_break_bond(fail, sums, bd, bf.release_i, bf.release_j, vi, vj, 0);
   }
@@ -226,7 +234,8 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
     const pd_bond_force bf = force(mat, &bd, eps);
     if (failing) {
       special |= may_break(fail, &bd, eps, &bf);
-      g[3 * PD_CHUNK + k] = notes(fail, &bd);
+      g[3 * PD_CHUNK + k] = notes(fail, &bd);    /* (whether or not the law notes: a
+                                                  * condition here stops the vectorizer) */
     }
     for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = bf.tl * bd.d[c];
     if (tallied) {
@@ -236,6 +245,47 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
     }
   }
   return special;
+}
+
+/* A chunk's second pass for bond k: its force (from the first pass's g)
+ * onto sum_i and its reaction onto the far end's sum, the law's note. */
+PD_INLINE pd_sum4
+pd_scatter_bond(pd_sum4 sum_i, const int *restrict far, const double *restrict g,
+                const double *restrict vol, double vi, double *restrict reaction,
+                double *restrict note_atom, pd_law_note_fn note, double *rn, int k, int noting)
+{
+  const int j = far[k];
+  const double gx = g[k], gy = g[PD_CHUNK + k], gz = g[2 * PD_CHUNK + k];
+  pd_add4(reaction + 4 * (ptrdiff_t) j, -vi, gx, gy, gz);
+  if (noting) {
+    const double value = g[3 * PD_CHUNK + k];
+    note(note_atom, j, value);
+    *rn = value > *rn ? value : *rn;
+  }
+  return pd_sum4_axpy(sum_i, vol[j], gx, gy, gz);
+}
+
+/* A chunk's second pass: pd_scatter_bond for its m bonds, the even ones
+ * onto fi[0] and the odd ones onto fi[1]; the largest note onto row_note. */
+PD_INLINE void
+pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict g,
+                 const double *restrict vol, double vi, double *restrict reaction,
+                 double *restrict note_atom, pd_law_note_fn note, double *row_note, int m,
+                 int noting)
+{
+  /* (fi's halves and the row's note as locals: their memory would be
+   * loaded and stored again for every bond) */
+  pd_sum4 even = fi[0], odd = fi[1];
+  double rn = *row_note;
+  int k = 0;
+  for (; k + 1 < m; k += 2) {
+    even = pd_scatter_bond(even, far, g, vol, vi, reaction, note_atom, note, &rn, k, noting);
+    odd = pd_scatter_bond(odd, far, g, vol, vi, reaction, note_atom, note, &rn, k + 1, noting);
+  }
+  if (k < m) even = pd_scatter_bond(even, far, g, vol, vi, reaction, note_atom, note, &rn, k, noting);
+  fi[0] = even;
+  fi[1] = odd;
+  *row_note = rn;
 }
 
 /* Walks every bond once. Evaluations that tally per-atom energy and
@@ -260,6 +310,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
   /* (a local: read through fail, it was loaded again after every
    * reaction store) */
   double *restrict note_atom = failing ? fail->note_atom : NULL;
+  const int noting = note_atom != NULL;
   pd_bond bd;
   double g[7 * PD_CHUNK];
   for (int i = 0; i < b->nowner; i++) {
@@ -267,7 +318,10 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
     if (!n) continue;
     const int row = i * b->stride;
     const double vi = vol[i];
-    double fi[4] = {0.0, 0.0, 0.0, 0.0};
+    /* the sum on i in two halves, bonds 0, 2, 4 .. of the row and 1, 3, ..:
+     * two chains of adds instead of one (the scalar pass waited on it) */
+    pd_sum4 fi[2];
+    memset(fi, 0, sizeof fi);
     bd.i = i;
     bd.ti = type ? type[i] : 1;
     const int trow = bd.ti * ntypes;
@@ -281,23 +335,14 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                                   strain, force, may_break, notes, weighted, failing, tallied)
                  : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
                                   strain, force, may_break, notes, weighted, failing, tallied))) {
-        /* fi as a value: its array lives in memory across the law's calls */
-        pd_sum4 sum_i = pd_sum4_load(fi);
+        /* (a copy per case: a test per bond cost the legacy law 9%) */
+        if (noting)
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, note_atom, note, &row_note,
+                           m, 1);
+        else
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, note_atom, note, &row_note,
+                           m, 0);
         const int *restrict far = b->far + row + k0;
-        double rn = row_note;    /* (a local: the bond-by-bond path takes row_note's address) */
-        for (int k = 0; k < m; k++) {
-          const int j = far[k];
-          const double gx = g[k], gy = g[PD_CHUNK + k], gz = g[2 * PD_CHUNK + k];
-          sum_i = pd_sum4_axpy(sum_i, vol[j], gx, gy, gz);
-          pd_add4(reaction + 4 * (ptrdiff_t) j, -vi, gx, gy, gz);
-          if (failing) {
-            const double value = g[3 * PD_CHUNK + k];
-            note(note_atom, j, value);
-            rn = value > rn ? value : rn;
-          }
-        }
-        row_note = rn;
-        pd_sum4_store(fi, sum_i);
         /* as pd_force_bond tallies an intact bond, bond after bond (its
          * arithmetic written again here: through shared helpers this
          * pass ran 6% slower on tallied steps) */
@@ -311,13 +356,14 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
         continue;
       }
       for (int k = 0; k < m; k++)
-        pd_force_bond(b, type, trow, x, xi, vol, reaction, fi, &bd, row + k0 + k, &sums, tally,
+        pd_force_bond(b, type, trow, x, xi, vol, reaction, &fi[k & 1], &bd, row + k0 + k,
+                      &sums, tally,
                       fail, mat, strain, force, breaks_now, breaks_after, notes, note, note_atom,
                       &row_note,
                       weighted, tallied, failing, directed);
     }
-    for (int c = 0; c < 3; c++) f[3 * i + c] += fi[c];
-    if (failing) note(note_atom, i, row_note);
+    for (int c = 0; c < 3; c++) f[3 * i + c] += pd_sum4_lane(fi[0], c) + pd_sum4_lane(fi[1], c);
+    if (noting) note(note_atom, i, row_note);
   }
   for (int a = 0; a < nall; a++)
     for (int c = 0; c < 3; c++) f[3 * a + c] += reaction[4 * a + c];
