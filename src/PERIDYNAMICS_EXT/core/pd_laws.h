@@ -17,7 +17,10 @@
  *                       nothing): the loop gives it each bond's value at
  *                       the far end and, once per row, the row's largest
  *                       at the owner, so a law's notes combine by their
- *                       maximum (any order gives the same result).
+ *                       maximum (any order gives the same result). An
+ *                       evaluation whose law needs no notes gives no
+ *                       array (pd_failure.note_atom NULL): the loop keeps
+ *                       none then.
  * _now, _after, _ahead and _notes only answer (no side effects): the loop
  * asks _ahead and _notes for a row's bonds ahead of their turn, in its
  * vectorized pass, and _now, _after and _notes again bond by bond.
