@@ -67,6 +67,7 @@ PD_INLINE pd_sum4 pd_sum4_axpy(pd_sum4 acc, double s, double a0, double a1, doub
   return acc;
 }
 #endif
+/* lane c of v */
 PD_INLINE double pd_sum4_lane(pd_sum4 v, int c)
 {
   double a[4];
