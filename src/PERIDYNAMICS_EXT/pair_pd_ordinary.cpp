@@ -208,13 +208,16 @@ void PairPDOrdinary::compute(int eflag, int vflag)
   begin_evaluation(e);
   const pd_bond_view &v = e.view;
   // the bonds' strains, for owned rows only (a tenth more, so that atoms
-  // migrating in rarely make it grow again)
-  if (order != 0.5 && (bigint) v.nowner * v.stride > nstrain) {
+  // migrating in rarely make it grow again), for the orders whose strain
+  // is worth keeping between the passes: not m = 1/2 (the stretch) nor
+  // m = 0 (the log, vectorized: both passes computing it is faster)
+  const bool keep_strain = order != 0.5 && order != 0.0;
+  if (keep_strain && (bigint) v.nowner * v.stride > nstrain) {
     nstrain = (bigint) (v.nowner + v.nowner / 10 + 1) * v.stride;
     memory->destroy(strain);
     memory->create(strain, nstrain, "pair:strain");
   }
-  pd_ordinary_state st = {order, sum, abstate, order != 0.5 ? strain : nullptr, uniform_b};
+  pd_ordinary_state st = {order, sum, abstate, keep_strain ? strain : nullptr, uniform_b};
   pd_ordinary_dilatation(&e.L, &st);
   bonds->sum_to_owners(sum);
 
