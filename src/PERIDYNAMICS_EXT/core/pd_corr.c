@@ -196,7 +196,8 @@ static inline double stretch(void *st, const pd_bond *bd)
  * energies and the failure laws read it) */
 static inline double strain_log(void *st, const pd_bond *bd)
 {
-  return pd_bond_strain(PD_ORDER_LOG, ((const pd_corr_state *) st)->order, bd);
+  (void) st;
+  return pd_bond_log_strain(bd, 0);
 }
 static inline double strain_any(void *st, const pd_bond *bd)
 {
