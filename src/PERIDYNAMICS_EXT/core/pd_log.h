@@ -1,8 +1,9 @@
 /* The natural logarithm in plain arithmetic, so that a loop that takes it
  * still vectorizes (a call to libm's log keeps the whole loop scalar):
- * the log strain (m = 0) of pd/ordinary's bond loops. Within 1 ulp of the
- * exact value (core.log checks it against libm over many decades); log 0 is
- * -inf, log of a negative number or NaN is NaN, log inf is inf.
+ * the log strain (m = 0) of pd/ordinary's bond loops. Within 1 ulp of
+ * libm's log (core.log checks it over many decades), and the same on every
+ * CPU; log 0 is -inf, log of a negative number or NaN is NaN, log inf is
+ * inf.
  *
  * x = 2^e y with y in [sqrt(1/2), sqrt(2)), f = y - 1 (exact), and
  * log(1 + f) = 2 atanh(s) with s = f / (2 + f), |s| < 0.172:

@@ -57,16 +57,16 @@ ORDER_HOOKS(PD_ORDER_HALF, half)
 ORDER_HOOKS(PD_ORDER_LOG, log)
 ORDER_HOOKS(PD_ORDER_ANY, any)
 
-/* m != 1/2: the dilatation pass stores each bond's strain, the force pass
- * reads it back (one log per bond). */
-#define STORED_STRAIN_HOOK(KIND, name)                                                    \
-  static inline double strain_##name##_stored(void *st, const pd_bond *bd)                \
-  {                                                                                       \
-    const pd_ordinary_state *s = (const pd_ordinary_state *) st;                          \
-    return s->strain[bd->idx] = pd_bond_strain(KIND, s->order, bd);                          \
-  }
-STORED_STRAIN_HOOK(PD_ORDER_LOG, log)
-STORED_STRAIN_HOOK(PD_ORDER_ANY, any)
+/* m other than 1/2 and 0, with a strain scratch: the dilatation pass
+ * stores each bond's strain, the force pass reads it back (one log and one
+ * expm1 per bond). m = 0 computes its strain in both passes: its log is
+ * pd_log, and the loops stay vectorized (a store through the state's
+ * pointer would stop that). */
+static inline double strain_any_stored(void *st, const pd_bond *bd)
+{
+  const pd_ordinary_state *s = (const pd_ordinary_state *) st;
+  return s->strain[bd->idx] = pd_bond_strain(PD_ORDER_ANY, s->order, bd);
+}
 
 static inline double strain_cached(void *st, const pd_bond *bd)
 {
@@ -82,8 +82,7 @@ static inline pd_bond_force force_half_uniform(void *st, const pd_bond *bd, doub
 
 PD_DEFINE_KERNELS(half, strain_half, force_half)
 PD_DEFINE_KERNELS(half_uniform, strain_half, force_half_uniform)
-PD_DEFINE_KERNELS(log_computed, strain_log, force_log)
-PD_DEFINE_KERNELS(log_cached, strain_cached, force_log)
+PD_DEFINE_KERNELS(log, strain_log, force_log)
 PD_DEFINE_KERNELS(any_computed, strain_any, force_any)
 PD_DEFINE_KERNELS(any_cached, strain_cached, force_any)
 
@@ -92,7 +91,7 @@ void pd_ordinary_forces(const pd_loop *L, const pd_ordinary_state *st)
 {
   const int kind = pd_order_kind(st->order), cached = st->strain != NULL;
   const pd_kernel (*table)[6] = kind == PD_ORDER_HALF ? (st->uniform_b ? half_uniform_kernels : half_kernels)
-      : kind == PD_ORDER_LOG ? (cached ? log_cached_kernels : log_computed_kernels)
+      : kind == PD_ORDER_LOG ? log_kernels
                           : (cached ? any_cached_kernels : any_computed_kernels);
   pd_run_kernel(table, L, (void *) st);
 }
@@ -107,14 +106,12 @@ static inline void weighted_strain(void *st, const pd_bond *bd, double eps, doub
 
 void pd_ordinary_dilatation(const pd_loop *L, const pd_ordinary_state *st)
 {
-  const int kind = pd_order_kind(st->order), stored = st->strain != NULL && kind != PD_ORDER_HALF;
+  const int kind = pd_order_kind(st->order), stored = st->strain != NULL && kind == PD_ORDER_ANY;
   switch ((kind * 2 + stored) * 2 + (L->fail != NULL)) {
   case (PD_ORDER_HALF * 2) * 2: DILATATION(strain_half, 0); break;
   case (PD_ORDER_HALF * 2) * 2 + 1: DILATATION(strain_half, 1); break;
   case (PD_ORDER_LOG * 2) * 2: DILATATION(strain_log, 0); break;
   case (PD_ORDER_LOG * 2) * 2 + 1: DILATATION(strain_log, 1); break;
-  case (PD_ORDER_LOG * 2 + 1) * 2: DILATATION(strain_log_stored, 0); break;
-  case (PD_ORDER_LOG * 2 + 1) * 2 + 1: DILATATION(strain_log_stored, 1); break;
   case (PD_ORDER_ANY * 2) * 2: DILATATION(strain_any, 0); break;
   case (PD_ORDER_ANY * 2) * 2 + 1: DILATATION(strain_any, 1); break;
   case (PD_ORDER_ANY * 2 + 1) * 2: DILATATION(strain_any_stored, 0); break;

@@ -35,8 +35,9 @@ typedef struct pd_ordinary_state {
   double *sum;     /* dilatation sums, before normalization */
   const double *ab;/* per atom, interleaved: A = lambda theta N, B = 2 mu N */
   double *strain;  /* per-bond scratch laid out as the bonds, or NULL: for
-                      m != 1/2 the dilatation pass stores each bond's strain
-                      there and the force pass reuses it (one log per bond) */
+                      m other than 1/2 and 0 the dilatation pass stores each
+                      bond's strain there and the force pass reuses it (one
+                      log and expm1 per bond); m = 1/2 and 0 ignore it */
   int uniform_b;   /* every atom's B is the same (no surface correction, one
                       B for all types): the m = 1/2 force pass takes the
                       owner's for the far end's instead of gathering it */
