@@ -208,10 +208,9 @@ void PairPDOrdinary::compute(int eflag, int vflag)
   begin_evaluation(e);
   const pd_bond_view &v = e.view;
   // the bonds' strains, for owned rows only (a tenth more, so that atoms
-  // migrating in rarely make it grow again), for the orders whose strain
-  // is worth keeping between the passes: not m = 1/2 (the stretch) nor
-  // m = 0 (the log, vectorized: both passes computing it is faster)
-  const bool keep_strain = order != 0.5 && order != 0.0;
+  // migrating in rarely make it grow again), for the orders that keep it
+  // between the passes
+  const bool keep_strain = pd_ordinary_keeps_strain(order);
   if (keep_strain && (bigint) v.nowner * v.stride > nstrain) {
     nstrain = (bigint) (v.nowner + v.nowner / 10 + 1) * v.stride;
     memory->destroy(strain);

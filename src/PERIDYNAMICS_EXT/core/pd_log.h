@@ -22,18 +22,29 @@
 #include <stdint.h>
 #include <string.h>
 
+/* The bits of a double, and back. */
+PD_INLINE uint64_t pd_bits(double x)
+{
+  uint64_t b;
+  memcpy(&b, &x, sizeof b);
+  return b;
+}
+PD_INLINE double pd_from_bits(uint64_t b)
+{
+  double x;
+  memcpy(&x, &b, sizeof x);
+  return x;
+}
+
 PD_INLINE double pd_log(double x)
 {
   static const double ln2_hi = 0.6931467056274414, ln2_lo = 4.7493250390316726e-07;
   /* subnormals scaled up by 2^54 first */
   const int tiny = x < DBL_MIN;
   const double xs = tiny ? x * 18014398509481984.0 : x;
-  uint64_t bits;
-  memcpy(&bits, &xs, sizeof bits);
+  const uint64_t bits = pd_bits(xs);
   int64_t e = (int64_t) ((bits >> 52) & 0x7ff) - 1023 - (tiny ? 54 : 0);
-  const uint64_t ybits = (bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL;
-  double y;
-  memcpy(&y, &ybits, sizeof y);
+  double y = pd_from_bits((bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL);
   /* y in [1, 2): halve the upper part into [sqrt(1/2), 1) */
   const int upper = y > 1.4142135623730951;
   y = upper ? 0.5 * y : y;
@@ -49,13 +60,7 @@ PD_INLINE double pd_log(double x)
    * GCC moves the arithmetic above into a branch and does not vectorize */
   const double edge = x == 0.0 ? -INFINITY : x < 0.0 ? NAN : x;
   const uint64_t normal = -(uint64_t) ((x > 0.0) & (x <= DBL_MAX));
-  uint64_t rb, eb;
-  memcpy(&rb, &r, sizeof rb);
-  memcpy(&eb, &edge, sizeof eb);
-  const uint64_t ob = (rb & normal) | (eb & ~normal);
-  double out;
-  memcpy(&out, &ob, sizeof out);
-  return out;
+  return pd_from_bits((pd_bits(r) & normal) | (pd_bits(edge) & ~normal));
 }
 
 #endif

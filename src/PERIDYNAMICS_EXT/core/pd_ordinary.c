@@ -62,6 +62,8 @@ ORDER_HOOKS(PD_ORDER_ANY, any)
  * expm1 per bond). m = 0 computes its strain in both passes: its log is
  * pd_log, and the loops stay vectorized (a store through the state's
  * pointer would stop that). */
+int pd_ordinary_keeps_strain(double m) { return pd_order_kind(m) == PD_ORDER_ANY; }
+
 static inline double strain_any_stored(void *st, const pd_bond *bd)
 {
   const pd_ordinary_state *s = (const pd_ordinary_state *) st;
@@ -106,7 +108,8 @@ static inline void weighted_strain(void *st, const pd_bond *bd, double eps, doub
 
 void pd_ordinary_dilatation(const pd_loop *L, const pd_ordinary_state *st)
 {
-  const int kind = pd_order_kind(st->order), stored = st->strain != NULL && kind == PD_ORDER_ANY;
+  const int kind = pd_order_kind(st->order),
+            stored = st->strain != NULL && pd_ordinary_keeps_strain(st->order);
   switch ((kind * 2 + stored) * 2 + (L->fail != NULL)) {
   case (PD_ORDER_HALF * 2) * 2: DILATATION(strain_half, 0); break;
   case (PD_ORDER_HALF * 2) * 2 + 1: DILATATION(strain_half, 1); break;
