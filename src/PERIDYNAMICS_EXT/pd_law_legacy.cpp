@@ -84,13 +84,11 @@ class LawLegacy : public PDFailureLaw {
   const void *evaluation() override
   {
     const int nall = atom->nlocal + atom->nghost;
-    if (!fixed) {
-      if (atom->nmax > nmax) {
-        nmax = atom->nmax;
-        memory->destroy(s0_new);
-        memory->create(s0_new, nmax, "pd/legacy:s0_new");
-      }
-      for (int i = 0; i < nall; i++) s0_new[i] = -INFINITY;
+    // (the force loop writes every entry, owned and ghost)
+    if (!fixed && atom->nmax > nmax) {
+      nmax = atom->nmax;
+      memory->destroy(s0_new);
+      memory->create(s0_new, nmax, "pd/legacy:s0_new");
     }
     params = {table(S00), table(ALPHA), atom->s0, pd_failure_floor(atom->s0, nall)};
     return &params;

@@ -19,11 +19,13 @@
  * that computes every bond's force (gathering the far ends' positions)
  * and a scalar one that adds them onto the far ends (and tallies energy
  * and virial). Rows with a broken or breaking bond, steps that tally
- * per-atom energy and directed materials go bond by bond. Both ways do the same arithmetic in the same order, so the
- * results are the same to the bit (lammps.kernels). The far ends' sums
- * go into a scratch of 4 doubles per atom (pd_loop.reaction), added onto
- * f at the end: a bond's reaction is then one 4-wide add instead of three
- * scalar ones (pd/bond 1.13x, pd/ordinary 1.06x at 32^3). */
+ * per-atom energy and directed materials go bond by bond. Both ways do
+ * the same arithmetic in the same order, so the results are the same to
+ * the bit (lammps.kernels). The far ends' sums go into a scratch of 4
+ * doubles per atom (pd_loop.reaction, pd_sum4.h), added onto f at the end:
+ * a bond's reaction is then one 4-wide add instead of three scalar ones
+ * (pd/bond 1.13x, pd/ordinary 1.06x at 32^3). The 4th lane keeps the
+ * failure law's notes, so that a note rides in the same update. */
 #ifndef PD_BOND_LOOP_H
 #define PD_BOND_LOOP_H
 
@@ -31,6 +33,7 @@
 #include "pd_failure.h"
 #include "pd_law_hooks.h"
 #include "pd_loop.h"
+#include "pd_sum4.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -44,48 +47,6 @@ typedef int (*pd_breaks_after_fn)(const pd_failure *f, const pd_bond *bd, double
 typedef int (*pd_may_break_fn)(const pd_failure *f, const pd_bond *bd, double eps,
                                const pd_bond_force *bf);
 typedef double (*pd_law_notes_fn)(const pd_failure *f, const pd_bond *bd);
-typedef void (*pd_law_note_fn)(double *note_atom, int atom, double value);
-
-/* Four doubles summed lane by lane (the 4th is padding): one 4-wide add
- * where the compiler has vector types (GCC, clang), scalar ones otherwise;
- * the same arithmetic either way. Loaded from and stored to any 4 doubles. */
-#if defined(__GNUC__) || defined(__clang__)
-typedef double pd_sum4 __attribute__((vector_size(32)));
-/* acc + s (a0, a1, a2, 0) */
-PD_INLINE pd_sum4 pd_sum4_axpy(pd_sum4 acc, double s, double a0, double a1, double a2)
-{
-  const pd_sum4 a = {a0, a1, a2, 0.0};
-  return acc + s * a;
-}
-#else
-typedef struct pd_sum4 { double v[4]; } pd_sum4;
-PD_INLINE pd_sum4 pd_sum4_axpy(pd_sum4 acc, double s, double a0, double a1, double a2)
-{
-  acc.v[0] += s * a0;
-  acc.v[1] += s * a1;
-  acc.v[2] += s * a2;
-  return acc;
-}
-#endif
-/* lane c of v */
-PD_INLINE double pd_sum4_lane(pd_sum4 v, int c)
-{
-  double a[4];
-  memcpy(a, &v, sizeof a);
-  return a[c];
-}
-PD_INLINE pd_sum4 pd_sum4_load(const double *p)
-{
-  pd_sum4 v;
-  memcpy(&v, p, sizeof v);
-  return v;
-}
-PD_INLINE void pd_sum4_store(double *p, pd_sum4 v) { memcpy(p, &v, sizeof v); }
-/* p[0..3] += s (a0, a1, a2, 0) */
-PD_INLINE void pd_add4(double *restrict p, double s, double a0, double a1, double a2)
-{
-  pd_sum4_store(p, pd_sum4_axpy(pd_sum4_load(p), s, a0, a1, a2));
-}
 
 /* How a loop takes each bond's weight: 1, the table, or weight_horizon
  * times 1/|xi| (pd_bond_view). */
@@ -129,7 +90,8 @@ pd_bond_load(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict ty
 
 /* One bond of the force loop: decode (broken bonds, recontact), ask the
  * material and the failure law, add the force on i to fi and the reaction
- * on j to its sum (pd_loop.reaction), tally. The arrays are parameters so
+ * on j to its sum (pd_loop.reaction), tally; when 'noting', the law's note
+ * onto j's sum (its 4th lane) and row_note. The arrays are parameters so
  * that 'restrict' holds (GCC honours it on parameters): the force stores
  * then do not make it reload x or the material's tables. */
 PD_INLINE void
@@ -138,8 +100,7 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
               double *restrict reaction, pd_sum4 *fi, pd_bond *bd, int idx, pd_break_sums *sums,
               pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-              pd_law_notes_fn notes, pd_law_note_fn note, double *restrict note_atom,
-              double *row_note, int weighted,
+              pd_law_notes_fn notes, double *row_note, int noting, int weighted,
               int tallied, int failing, int directed)
 {
   pd_bond_load(bd, b, type, trow, x, xi, fail, idx, weighted, failing, 1);
@@ -181,10 +142,10 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
     }
   }
   if (failing && !bd->broken) {
-    if (note_atom) {
+    if (noting) {
       const double value = notes(fail, bd);
-      note(note_atom, bd->j, value);
-      *row_note = value > *row_note ? value : *row_note;
+      pd_note_max(reaction + 4 * (ptrdiff_t) j + 3, value);
+      pd_note_max(row_note, value);
     }
     if (breaks_after(fail, bd, eps))
       pd_break_bond(fail, sums, bd, bf.release_i, bf.release_j, vi, vj, 0);
@@ -248,22 +209,39 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
   return special;
 }
 
-/* A chunk's second pass for bond k: its force (from the first pass's g)
- * onto sum_i and its reaction onto the far end's sum, the law's note. */
-PD_INLINE pd_sum4
-pd_scatter_bond(pd_sum4 sum_i, const int *restrict far, const double *restrict g,
-                const double *restrict vol, double vi, double *restrict reaction,
-                double *restrict note_atom, pd_law_note_fn note, double *rn, int k, int noting)
+/* The first pass's numbers of bond k as one vector: its force (lanes 0-2)
+ * and, when 'noting', its note (lane 3; else 0). */
+PD_INLINE pd_sum4 pd_chunk_record(const double *restrict g, int k, int noting)
 {
-  const int j = far[k];
-  const double gx = g[k], gy = g[PD_CHUNK + k], gz = g[2 * PD_CHUNK + k];
-  pd_add4(reaction + 4 * (ptrdiff_t) j, -vi, gx, gy, gz);
+  return pd_sum4_make(g[k], g[PD_CHUNK + k], g[2 * PD_CHUNK + k], noting ? g[3 * PD_CHUNK + k] : 0.0);
+}
+
+/* The same for bonds k .. k+3 at once: four loads and a transpose. */
+PD_INLINE void pd_chunk_records4(const double *restrict g, int k, int noting, pd_sum4 a[4])
+{
+  const pd_sum4 c[4] = {pd_sum4_load(g + k), pd_sum4_load(g + PD_CHUNK + k),
+                        pd_sum4_load(g + 2 * PD_CHUNK + k),
+                        noting ? pd_sum4_load(g + 3 * PD_CHUNK + k) : pd_sum4_make(0.0, 0.0, 0.0, 0.0)};
+  pd_sum4_transpose(c, a);
+}
+
+/* A chunk's second pass for one bond, its record a (pd_chunk_record) and
+ * far end j: its force onto sum_i and its reaction onto the far end's sum;
+ * when 'noting', its note onto the far end's sum (lane 3) and into rn
+ * (lane 3: the largest of the row's). */
+PD_INLINE pd_sum4
+pd_scatter_bond(pd_sum4 sum_i, pd_sum4 a, int j, const double *restrict vol, double vi,
+                double *restrict reaction, pd_sum4 *rn, int noting)
+{
+  double *restrict rj = reaction + 4 * (ptrdiff_t) j;
   if (noting) {
-    const double value = g[3 * PD_CHUNK + k];
-    note(note_atom, j, value);
-    *rn = value > *rn ? value : *rn;
+    pd_sum4_store(rj, pd_sum4_axpy_note(pd_sum4_load(rj), -vi, a));
+    *rn = pd_sum4_max(a, *rn);
+  } else {
+    pd_sum4_store(rj, pd_sum4_axpy4(pd_sum4_load(rj), -vi, a));
   }
-  return pd_sum4_axpy(sum_i, vol[j], gx, gy, gz);
+  /* (lane 3 then sums notes times volumes: never read) */
+  return pd_sum4_axpy4(sum_i, vol[j], a);
 }
 
 /* A chunk's second pass: pd_scatter_bond for its m bonds, the even ones
@@ -271,22 +249,25 @@ pd_scatter_bond(pd_sum4 sum_i, const int *restrict far, const double *restrict g
 PD_INLINE void
 pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict g,
                  const double *restrict vol, double vi, double *restrict reaction,
-                 double *restrict note_atom, pd_law_note_fn note, double *row_note, int m,
-                 int noting)
+                 double *row_note, int m, int noting)
 {
   /* (fi's halves and the row's note as locals: their memory would be
    * loaded and stored again for every bond) */
-  pd_sum4 even = fi[0], odd = fi[1];
-  double rn = *row_note;
+  pd_sum4 sum[2] = {fi[0], fi[1]};
+  pd_sum4 rn = pd_sum4_make(0.0, 0.0, 0.0, *row_note);
   int k = 0;
-  for (; k + 1 < m; k += 2) {
-    even = pd_scatter_bond(even, far, g, vol, vi, reaction, note_atom, note, &rn, k, noting);
-    odd = pd_scatter_bond(odd, far, g, vol, vi, reaction, note_atom, note, &rn, k + 1, noting);
+  for (; k + 3 < m; k += 4) {
+    pd_sum4 a[4];
+    pd_chunk_records4(g, k, noting, a);
+    for (int c = 0; c < 4; c++)
+      sum[c & 1] = pd_scatter_bond(sum[c & 1], a[c], far[k + c], vol, vi, reaction, &rn, noting);
   }
-  if (k < m) even = pd_scatter_bond(even, far, g, vol, vi, reaction, note_atom, note, &rn, k, noting);
-  fi[0] = even;
-  fi[1] = odd;
-  *row_note = rn;
+  for (; k < m; k++)
+    sum[k & 1] = pd_scatter_bond(sum[k & 1], pd_chunk_record(g, k, noting), far[k], vol, vi,
+                                 reaction, &rn, noting);
+  fi[0] = sum[0];
+  fi[1] = sum[1];
+  *row_note = pd_sum4_lane(rn, 3);
 }
 
 /* Walks every bond once. Evaluations that tally per-atom energy and
@@ -295,23 +276,28 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
  * and its (distinct) far ends, the failure law's notes and the energy and
  * virial tallies, in the same order and with the same arithmetic as bond
  * by bond. The far ends' sums (reaction, nall atoms) are zeroed first and
- * added onto f last. */
+ * added onto f last; the notes' maximum (their 4th lane, -inf where none)
+ * then goes to pd_failure.note_atom. */
 PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
                  const double *restrict x, const double *restrict vol, double *restrict f,
                  double *restrict reaction, int nall, pd_tally *tally, pd_failure *fail,
                  void *restrict mat, pd_strain_fn strain, pd_force_fn force,
                  pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-                 pd_may_break_fn may_break, pd_law_notes_fn notes, pd_law_note_fn note, int weighted,
+                 pd_may_break_fn may_break, pd_law_notes_fn notes, int weighted,
                  int tallied, int failing, int directed)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int chunked = !directed && !(tallied && tally->eatom);
-  memset(reaction, 0, sizeof(double) * 4 * (size_t) nall);
   /* (a local: read through fail, it was loaded again after every
    * reaction store) */
   double *restrict note_atom = failing ? fail->note_atom : NULL;
   const int noting = note_atom != NULL;
+  /* the notes' maximum in the sums' 4th lane: one 4-wide update per bond */
+  if (noting)
+    for (int a = 0; a < nall; a++) pd_sum4_store(reaction + 4 * (ptrdiff_t) a, pd_sum4_make(0.0, 0.0, 0.0, -INFINITY));
+  else
+    memset(reaction, 0, sizeof(double) * 4 * (size_t) nall);
   pd_bond bd;
   double g[7 * PD_CHUNK];
   for (int i = 0; i < b->nowner; i++) {
@@ -338,11 +324,9 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                                   strain, force, may_break, notes, weighted, failing, tallied))) {
         /* (a copy per case: a test per bond cost the legacy law 9%) */
         if (noting)
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, note_atom, note, &row_note,
-                           m, 1);
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1);
         else
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, note_atom, note, &row_note,
-                           m, 0);
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0);
         const int *restrict far = b->far + row + k0;
         /* as pd_force_bond tallies an intact bond, bond after bond (its
          * arithmetic written again here: through shared helpers this
@@ -359,26 +343,27 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       for (int k = 0; k < m; k++)
         pd_force_bond(b, type, trow, x, xi, vol, reaction, &fi[k & 1], &bd, row + k0 + k,
                       &sums, tally,
-                      fail, mat, strain, force, breaks_now, breaks_after, notes, note, note_atom,
-                      &row_note,
+                      fail, mat, strain, force, breaks_now, breaks_after, notes, &row_note, noting,
                       weighted, tallied, failing, directed);
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += pd_sum4_lane(fi[0], c) + pd_sum4_lane(fi[1], c);
-    if (noting) note(note_atom, i, row_note);
+    if (noting) pd_note_max(reaction + 4 * (ptrdiff_t) i + 3, row_note);
   }
-  for (int a = 0; a < nall; a++)
+  for (int a = 0; a < nall; a++) {
     for (int c = 0; c < 3; c++) f[3 * a + c] += reaction[4 * a + c];
+    if (noting) note_atom[a] = reaction[4 * a + 3];
+  }
   if (failing) pd_add_break_sums(fail, &sums);
 }
 
 PD_INLINE void
 pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn force,
               pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-              pd_may_break_fn may_break, pd_law_notes_fn notes, pd_law_note_fn note, int weighted,
+              pd_may_break_fn may_break, pd_law_notes_fn notes, int weighted,
               int tallied, int failing, int directed)
 {
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->reaction, L->nall, L->tally,
-                   L->fail, mat, strain, force, breaks_now, breaks_after, may_break, notes, note,
+                   L->fail, mat, strain, force, breaks_now, breaks_after, may_break, notes,
                    weighted, tallied, failing, directed);
 }
 
@@ -389,7 +374,7 @@ typedef void (*pd_kernel)(const pd_loop *L, void *mat);
   static void prefix##_##law##_##failing##weighted##tallied(const pd_loop *L, void *mat) \
   {                                                                                       \
     pd_force_loop(L, mat, strain, force, pd_law_##law##_now, pd_law_##law##_after,        \
-                  pd_law_##law##_ahead, pd_law_##law##_notes, pd_law_##law##_note,        \
+                  pd_law_##law##_ahead, pd_law_##law##_notes,                             \
                   weighted, tallied, failing, directed);                                  \
   }
 #define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing, directed) \

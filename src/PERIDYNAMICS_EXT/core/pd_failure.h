@@ -24,9 +24,9 @@ typedef struct pd_failure {
   const double *contact_radius;
   double *len0;           /* the bonds' reference lengths, written on breaking */
   double *released_atom;  /* per-atom released energy density (owned + ghost), or NULL */
-  /* the law's per-atom notes (owned + ghost): each intact bond that acted
-   * offers a value to both ends, which keep the largest; NULL for a law
-   * that notes nothing */
+  /* the law's per-atom notes (owned + ghost), written by the force loop:
+   * each intact bond that acted offers a value to both ends, which keep
+   * the largest (-inf where none); NULL for a law that notes nothing */
   double *note_atom;
   double released;        /* added by each call: sum of energy densities released */
   double released_joule;  /* the same in joules (volume-weighted) */

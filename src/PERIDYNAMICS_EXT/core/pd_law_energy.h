@@ -53,11 +53,6 @@ static inline double pd_law_energy_notes(const pd_failure *f, const pd_bond *bd)
   return 0.0;
 }
 
-static inline void pd_law_energy_note(double *at, int atom, double value)
-{
-  (void) at, (void) atom, (void) value;
-}
-
 /* Calibration. s_c(xi) = beta omega |xi|^-2 with omega the influence
  * function normalized to integrate to d over the horizon. Cutting every
  * bond across a unit area releases, bond by bond, s_c at both ends:

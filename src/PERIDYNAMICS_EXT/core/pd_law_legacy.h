@@ -49,12 +49,4 @@ static inline double pd_law_legacy_notes(const pd_failure *f, const pd_bond *bd)
   return p->s00[tij] - p->alpha[tij] * s;
 }
 
-/* (a max without a branch: the candidates of an unstrained block differ
- * by round-off, and a branch on them is a coin toss) */
-static inline void pd_law_legacy_note(double *at, int atom, double cand)
-{
-  const double s0 = at[atom];
-  at[atom] = cand > s0 ? cand : s0;
-}
-
 #endif

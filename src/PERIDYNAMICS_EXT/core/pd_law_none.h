@@ -31,9 +31,4 @@ static inline double pd_law_none_notes(const pd_failure *f, const pd_bond *bd)
   return 0.0;
 }
 
-static inline void pd_law_none_note(double *at, int atom, double value)
-{
-  (void) at, (void) atom, (void) value;
-}
-
 #endif

@@ -36,11 +36,6 @@ static inline double pd_law_stretch_notes(const pd_failure *f, const pd_bond *bd
   return 0.0;
 }
 
-static inline void pd_law_stretch_note(double *at, int atom, double value)
-{
-  (void) at, (void) atom, (void) value;
-}
-
 /* Critical stretch from the fracture energy for bond-based elasticity
  * (MS07 eq. 28-29 and the 2D analogues in THEORY.md): 3D sqrt(5 G / (9 K
  * delta)) with K = E / (3 (1 - 2 nu)), plane stress sqrt(4 pi G / (9 E delta)),

@@ -12,15 +12,12 @@
  *                       _after decide;
  *   pd_law_<name>_notes what the law keeps of every intact bond that acted
  *                       (a number per bond, e.g. a candidate for its ends'
- *                       state), and
- *   pd_law_<name>_note  keeps it at one end (its per-atom state; may do
- *                       nothing): the loop gives it each bond's value at
- *                       the far end and, once per row, the row's largest
- *                       at the owner, so a law's notes combine by their
- *                       maximum (any order gives the same result). An
+ *                       state). The loop gives the law each atom's largest
+ *                       (pd_failure.note_atom, owned and ghost atoms, -inf
+ *                       where no bond noted; a NaN is ignored), so notes
+ *                       combine by their maximum, in any order. An
  *                       evaluation whose law needs no notes gives no
- *                       array (pd_failure.note_atom NULL): the loop keeps
- *                       none then.
+ *                       array (note_atom NULL): the loop keeps none then.
  * _now, _after, _ahead and _notes only answer (no side effects): the loop
  * asks _ahead and _notes for a row's bonds ahead of their turn, in its
  * vectorized pass, and _now, _after and _notes again bond by bond.
@@ -29,7 +26,7 @@
 #ifndef PD_LAWS_H
 #define PD_LAWS_H
 
-/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_ahead/_notes/_note. */
+/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_ahead/_notes. */
 #define PD_FAILURE_LAWS(X, ...)          \
   X(NONE, none, __VA_ARGS__)             \
   X(STRETCH, stretch, __VA_ARGS__)       \
