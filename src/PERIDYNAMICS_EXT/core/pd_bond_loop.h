@@ -213,15 +213,17 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
  * and, when 'noting', its note (lane 3; else 0). */
 PD_INLINE pd_sum4 pd_chunk_record(const double *restrict g, int k, int noting)
 {
-  return pd_sum4_make(g[k], g[PD_CHUNK + k], g[2 * PD_CHUNK + k], noting ? g[3 * PD_CHUNK + k] : 0.0);
+  return pd_sum4_make(g[k], g[PD_CHUNK + k], g[2 * PD_CHUNK + k],
+                      noting ? g[3 * PD_CHUNK + k] : 0.0);
 }
 
 /* The same for bonds k .. k+3 at once: four loads and a transpose. */
 PD_INLINE void pd_chunk_records4(const double *restrict g, int k, int noting, pd_sum4 a[4])
 {
+  const pd_sum4 zero = pd_sum4_make(0.0, 0.0, 0.0, 0.0);
   const pd_sum4 c[4] = {pd_sum4_load(g + k), pd_sum4_load(g + PD_CHUNK + k),
                         pd_sum4_load(g + 2 * PD_CHUNK + k),
-                        noting ? pd_sum4_load(g + 3 * PD_CHUNK + k) : pd_sum4_make(0.0, 0.0, 0.0, 0.0)};
+                        noting ? pd_sum4_load(g + 3 * PD_CHUNK + k) : zero};
   pd_sum4_transpose(c, a);
 }
 
@@ -295,7 +297,8 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
   const int noting = note_atom != NULL;
   /* the notes' maximum in the sums' 4th lane: one 4-wide update per bond */
   if (noting)
-    for (int a = 0; a < nall; a++) pd_sum4_store(reaction + 4 * (ptrdiff_t) a, pd_sum4_make(0.0, 0.0, 0.0, -INFINITY));
+    for (int a = 0; a < nall; a++)
+      pd_sum4_store(reaction + 4 * (ptrdiff_t) a, pd_sum4_make(0.0, 0.0, 0.0, -INFINITY));
   else
     memset(reaction, 0, sizeof(double) * 4 * (size_t) nall);
   pd_bond bd;
@@ -342,9 +345,8 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       }
       for (int k = 0; k < m; k++)
         pd_force_bond(b, type, trow, x, xi, vol, reaction, &fi[k & 1], &bd, row + k0 + k,
-                      &sums, tally,
-                      fail, mat, strain, force, breaks_now, breaks_after, notes, &row_note, noting,
-                      weighted, tallied, failing, directed);
+                      &sums, tally, fail, mat, strain, force, breaks_now, breaks_after, notes,
+                      &row_note, noting, weighted, tallied, failing, directed);
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += pd_sum4_lane(fi[0], c) + pd_sum4_lane(fi[1], c);
     if (noting) pd_note_max(reaction + 4 * (ptrdiff_t) i + 3, row_note);

@@ -29,7 +29,8 @@ PD_INLINE pd_sum4 pd_sum4_axpy4(pd_sum4 acc, double s, pd_sum4 a) { return acc +
 #define PD_SUM4_SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
 #else
 typedef long long pd_sum4_lanes __attribute__((vector_size(32)));
-#define PD_SUM4_SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (pd_sum4_lanes){i0, i1, i2, i3})
+#define PD_SUM4_SHUFFLE(a, b, i0, i1, i2, i3) \
+  __builtin_shuffle(a, b, (pd_sum4_lanes){i0, i1, i2, i3})
 #endif
 #else
 typedef struct pd_sum4 { double v[4]; } pd_sum4;
@@ -75,8 +76,11 @@ PD_INLINE void pd_add4(double *restrict p, double s, double a0, double a1, doubl
 PD_INLINE void pd_sum4_transpose(const pd_sum4 c[4], pd_sum4 out[4])
 {
 #if defined(PD_SUM4_SHUFFLE)
-  const pd_sum4 ab02 = PD_SUM4_SHUFFLE(c[0], c[1], 0, 4, 2, 6), ab13 = PD_SUM4_SHUFFLE(c[0], c[1], 1, 5, 3, 7);
-  const pd_sum4 cd02 = PD_SUM4_SHUFFLE(c[2], c[3], 0, 4, 2, 6), cd13 = PD_SUM4_SHUFFLE(c[2], c[3], 1, 5, 3, 7);
+  /* pairs of lanes 0 and 2, 1 and 3 of c[0], c[1] and of c[2], c[3] */
+  const pd_sum4 ab02 = PD_SUM4_SHUFFLE(c[0], c[1], 0, 4, 2, 6);
+  const pd_sum4 ab13 = PD_SUM4_SHUFFLE(c[0], c[1], 1, 5, 3, 7);
+  const pd_sum4 cd02 = PD_SUM4_SHUFFLE(c[2], c[3], 0, 4, 2, 6);
+  const pd_sum4 cd13 = PD_SUM4_SHUFFLE(c[2], c[3], 1, 5, 3, 7);
   out[0] = PD_SUM4_SHUFFLE(ab02, cd02, 0, 1, 4, 5);
   out[1] = PD_SUM4_SHUFFLE(ab13, cd13, 0, 1, 4, 5);
   out[2] = PD_SUM4_SHUFFLE(ab02, cd02, 2, 3, 6, 7);
