@@ -229,19 +229,16 @@ PD_INLINE void pd_chunk_records4(const double *restrict g, int k, int noting, pd
 
 /* A chunk's second pass for one bond, its record a (pd_chunk_record) and
  * far end j: its force onto sum_i and its reaction onto the far end's sum;
- * when 'noting', its note onto the far end's sum (lane 3) and into rn
- * (lane 3: the largest of the row's). */
+ * when 'noting', its note onto the far end's sum (lane 3). */
 PD_INLINE pd_sum4
 pd_scatter_bond(pd_sum4 sum_i, pd_sum4 a, int j, const double *restrict vol, double vi,
-                double *restrict reaction, pd_sum4 *rn, int noting)
+                double *restrict reaction, int noting)
 {
   double *restrict rj = reaction + 4 * (ptrdiff_t) j;
-  if (noting) {
+  if (noting)
     pd_sum4_store(rj, pd_sum4_axpy_note(pd_sum4_load(rj), -vi, a));
-    *rn = pd_sum4_max(a, *rn);
-  } else {
+  else
     pd_sum4_store(rj, pd_sum4_axpy4(pd_sum4_load(rj), -vi, a));
-  }
   /* (lane 3 then sums notes times volumes: never read) */
   return pd_sum4_axpy4(sum_i, vol[j], a);
 }
@@ -253,23 +250,28 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
                  const double *restrict vol, double vi, double *restrict reaction,
                  double *row_note, int m, int noting)
 {
-  /* (fi's halves and the row's note as locals: their memory would be
-   * loaded and stored again for every bond) */
+  const double *restrict note = g + 3 * PD_CHUNK;
+  /* (fi's halves as locals: their memory would be loaded and stored again
+   * for every bond; the notes' largest four at a time, lane l that of
+   * bonds l, l + 4, ..) */
   pd_sum4 sum[2] = {fi[0], fi[1]};
-  pd_sum4 rn = pd_sum4_make(0.0, 0.0, 0.0, *row_note);
+  pd_sum4 rn = pd_sum4_make(*row_note, *row_note, *row_note, *row_note);
   int k = 0;
   for (; k + 3 < m; k += 4) {
     pd_sum4 a[4];
     pd_chunk_records4(g, k, noting, a);
+    if (noting) rn = pd_sum4_max(pd_sum4_load(note + k), rn);
     for (int c = 0; c < 4; c++)
-      sum[c & 1] = pd_scatter_bond(sum[c & 1], a[c], far[k + c], vol, vi, reaction, &rn, noting);
+      sum[c & 1] = pd_scatter_bond(sum[c & 1], a[c], far[k + c], vol, vi, reaction, noting);
   }
-  for (; k < m; k++)
+  for (; k < m; k++) {
     sum[k & 1] = pd_scatter_bond(sum[k & 1], pd_chunk_record(g, k, noting), far[k], vol, vi,
-                                 reaction, &rn, noting);
+                                 reaction, noting);
+    if (noting) pd_note_max(row_note, note[k]);
+  }
   fi[0] = sum[0];
   fi[1] = sum[1];
-  *row_note = pd_sum4_lane(rn, 3);
+  for (int c = 0; noting && c < 4; c++) pd_note_max(row_note, pd_sum4_lane(rn, c));
 }
 
 /* Walks every bond once. Evaluations that tally per-atom energy and
