@@ -475,7 +475,7 @@ pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si,
  * values of every bond into tb (width per bond); nonzero if a bond is
  * broken (the caller then takes the chunk bond by bond). */
 PD_INLINE int
-pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
+pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
                      double *restrict tb, void *mat, pd_strain_fn strain,
                      pd_bond_strain_value_fn value, int weighted, int failing)
 {
@@ -489,6 +489,31 @@ pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int
     value(mat, &bd, strain(mat, &bd), tb + k * width);
   }
   return broken;
+}
+
+/* Bonds a first pass takes as one vector (AVX-512: 16, as two registers
+ * of 8 doubles, their far ends' indices in one). */
+enum { PD_VECTOR_BONDS = 16 };
+
+/* pd_current_sum_bonds for a chunk in whole vectors: a chunk whose size is
+ * not a multiple of PD_VECTOR_BONDS takes its whole vectors, then its last
+ * PD_VECTOR_BONDS bonds once more as one (the overlap computed again, to
+ * the same numbers); else its last bonds went one by one (a row of 61
+ * bonds: 48 in vectors of 16, 8 in one of 8 and 5 alone; pd/ordinary
+ * 1.03x, its m = 0 1.10x faster at 16^3). (The force pass gained 4% so on
+ * elastic steps but nothing on steps with a failure law: not taken.) */
+PD_INLINE int
+pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
+                     double *restrict tb, void *mat, pd_strain_fn strain,
+                     pd_bond_strain_value_fn value, int weighted, int failing)
+{
+  if (m <= PD_VECTOR_BONDS || m % PD_VECTOR_BONDS == 0)
+    return pd_current_sum_bonds(L, width, xi, i, row, m, tb, mat, strain, value, weighted, failing);
+  const int whole = m - m % PD_VECTOR_BONDS, last = m - PD_VECTOR_BONDS;
+  return pd_current_sum_bonds(L, width, xi, i, row, whole, tb, mat, strain, value, weighted,
+                              failing) ||
+         pd_current_sum_bonds(L, width, xi, i, row + last, PD_VECTOR_BONDS, tb + last * width,
+                              mat, strain, value, weighted, failing);
 }
 
 /* The same in the current configuration, over the bonds that act (a broken
