@@ -43,13 +43,13 @@ typedef struct pd_ordinary_state {
                       owner's for the far end's instead of gathering it */
 } pd_ordinary_state;
 
-/* Dilatation sums: st->sum[i] += w eps V_j, st->sum[j] += w eps V_i.
- * The caller zeroes st->sum over owned and ghost atoms and then sums the
- * ghosts' share onto their owners. */
 /* Whether order m keeps each bond's strain in pd_ordinary_state.strain
  * between the passes (the other orders compute it in both). */
 int pd_ordinary_keeps_strain(double m);
 
+/* Dilatation sums: st->sum[i] += w eps V_j, st->sum[j] += w eps V_i.
+ * The caller zeroes st->sum over owned and ghost atoms and then sums the
+ * ghosts' share onto their owners. */
 void pd_ordinary_dilatation(const pd_loop *L, const pd_ordinary_state *st);
 
 /* Force density on every bond end; with a tally, the bond part of the energy

@@ -35,7 +35,7 @@ pd_bond_strain(int kind, double m, const pd_bond *bd)
    * pd_bond_inverse, it would: the dilatation pass is then slower) */
   if (kind == PD_ORDER_HALF) return (bd->len - bd->r0) * (1.0 / bd->r0);
   if (kind == PD_ORDER_LOG) return pd_bond_log_strain(bd, 1);
-  return expm1(2.0 * m * log(bd->len / bd->r0)) / (2.0 * m);
+  return expm1(2.0 * m * pd_bond_log_strain(bd, 0)) / (2.0 * m);
 }
 
 /* d eps / d|Y| = c^(m-1) |Y| / |xi|^2 = (1 + 2 m eps) / |Y|. */
