@@ -43,17 +43,19 @@ PD_INLINE double pd_log(double x)
   const int tiny = x < DBL_MIN;
   const double xs = tiny ? x * 18014398509481984.0 : x;
   const uint64_t bits = pd_bits(xs);
-  int64_t e = (int64_t) ((bits >> 52) & 0x7ff) - 1023 - (tiny ? 54 : 0);
+  /* the biased exponent as a double by its bits (2^52 + it, less 2^52):
+   * exact, and no conversion of a 64-bit integer, which AVX2 has not (the
+   * loop would stay scalar there) */
+  const double biased = pd_from_bits(0x4330000000000000ULL | ((bits >> 52) & 0x7ff)) - 4503599627370496.0;
   double y = pd_from_bits((bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL);
   /* y in [1, 2): halve the upper part into [sqrt(1/2), 1) */
   const int upper = y > 1.4142135623730951;
   y = upper ? 0.5 * y : y;
-  e += upper;
+  const double de = biased - (tiny ? 1077.0 : 1023.0) + (upper ? 1.0 : 0.0);
   const double f = y - 1.0, s = f / (2.0 + f), z = s * s;
   const double t =
       z * (2.0 / 3 + z * (2.0 / 5 + z * (2.0 / 7 + z * (2.0 / 9 + z * (2.0 / 11 + z * (2.0 / 13 +
       z * (2.0 / 15 + z * (2.0 / 17 + z * (2.0 / 19 + z * (2.0 / 21))))))))));
-  const double de = (double) e;
   const double r = de * ln2_hi + ((f - s * (f - t)) + de * ln2_lo);
   /* the edges (0 gives -inf, a negative number NaN, inf and NaN
    * themselves), blended in by bits: with a select on the result, or an &&,
