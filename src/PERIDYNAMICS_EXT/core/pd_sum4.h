@@ -98,6 +98,16 @@ PD_INLINE void pd_sum4_transpose(const pd_sum4 c[4], pd_sum4 out[4])
  * branch on them is a coin toss. */
 PD_INLINE void pd_note_max(double *at, double value) { *at = value > *at ? value : *at; }
 
+#if defined(PD_SUM4_SHUFFLE)
+/* Lane by lane pd_note_max as a compare and a blend. */
+typedef long long pd_sum4_mask __attribute__((vector_size(32)));
+PD_INLINE pd_sum4 pd_sum4_larger(pd_sum4 value, pd_sum4 at)
+{
+  const pd_sum4_mask larger = (pd_sum4_mask) (value > at);
+  return (pd_sum4) ((larger & (pd_sum4_mask) value) | (~larger & (pd_sum4_mask) at));
+}
+#endif
+
 /* Lanes 0-2 r + s a, lane 3 r's and a's pd_note_max: a far end's sum with
  * a bond's reaction and note. */
 PD_INLINE pd_sum4 pd_sum4_axpy_note(pd_sum4 r, double s, pd_sum4 a)
@@ -106,6 +116,10 @@ PD_INLINE pd_sum4 pd_sum4_axpy_note(pd_sum4 r, double s, pd_sum4 a)
   const __m256d R = (__m256d) r, A = (__m256d) a;
   const __m256d sum = _mm256_mask_add_pd(R, 0x7, R, _mm256_mul_pd(_mm256_set1_pd(s), A));
   return (pd_sum4) _mm256_mask_max_pd(sum, 0x8, A, sum);
+#elif defined(PD_SUM4_SHUFFLE)
+  /* (AVX2: lane by lane through memory, the note's max was a third of a
+   * noting law's scalar pass) */
+  return PD_SUM4_SHUFFLE(r + s * a, pd_sum4_larger(a, r), 0, 1, 2, 7);
 #else
   double rv[4], av[4];
   memcpy(rv, &r, sizeof rv);
@@ -122,6 +136,8 @@ PD_INLINE pd_sum4 pd_sum4_max(pd_sum4 a, pd_sum4 b)
 {
 #if defined(PD_SUM4_AVX512)
   return (pd_sum4) _mm256_max_pd((__m256d) a, (__m256d) b);
+#elif defined(PD_SUM4_SHUFFLE)
+  return pd_sum4_larger(a, b);
 #else
   double av[4], bv[4];
   memcpy(av, &a, sizeof av);
