@@ -186,16 +186,17 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
                pd_force_fn force, pd_may_break_fn may_break, pd_law_notes_fn notes, int weighted,
                int failing, int tallied)
 {
-  int special = 0;
+  /* (64 bits wide, as the tests' masks are: an int made AVX2 pack them) */
+  long long special = 0;
   for (int k = 0; k < m; k++) {
     pd_bond bd;
     bd.i = i;
     bd.ti = ti;
-    special |= pd_bond_load_ahead(&bd, b, type, trow, x, xi, row + k, weighted, failing);
+    special |= (long long) pd_bond_load_ahead(&bd, b, type, trow, x, xi, row + k, weighted, failing);
     const double eps = strain(mat, &bd);
     const pd_bond_force bf = force(mat, &bd, eps);
     if (failing) {
-      special |= may_break(fail, &bd, eps, &bf);
+      special |= (long long) may_break(fail, &bd, eps, &bf);
       g[3 * PD_CHUNK + k] = notes(fail, &bd);    /* (whether or not the law notes: a
                                                   * condition here stops the vectorizer) */
     }
@@ -206,7 +207,7 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
       g[6 * PD_CHUNK + k] = bf.stored_j;
     }
   }
-  return special;
+  return special != 0;
 }
 
 /* The first pass's numbers of bond k as one vector: its force (lanes 0-2)
