@@ -26,7 +26,7 @@ static inline int pd_law_stretch_after(const pd_failure *f, const pd_bond *bd, d
 /* |Y| - |xi| > s0 |xi|, with s0 (> 0) a little smaller: every bond that
  * _now breaks passes (its stretch is within a few ulps of this quotient), and
  * an elastic step computes no stretch for it (pd/bond's cost of the law
- * on AVX2 1.25x -> 1.1x) */
+ * on AVX2 1.24x -> 1.06-1.14x) */
 static inline int pd_law_stretch_ahead(const pd_failure *f, const pd_bond *bd, double eps,
                                        const pd_bond_force *bf)
 {
