@@ -24,11 +24,12 @@ PD_INLINE pd_sum4 pd_sum4_make(double a0, double a1, double a2, double a3)
 }
 /* acc + s a */
 PD_INLINE pd_sum4 pd_sum4_axpy4(pd_sum4 acc, double s, pd_sum4 a) { return acc + s * a; }
+/* four 64-bit integers: shuffle indices, compare masks */
+typedef long long pd_sum4_lanes __attribute__((vector_size(32)));
 /* lanes i0 .. i3 of a and b together (0-3 a's, 4-7 b's) */
 #if defined(__clang__)
 #define PD_SUM4_SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
 #else
-typedef long long pd_sum4_lanes __attribute__((vector_size(32)));
 #define PD_SUM4_SHUFFLE(a, b, i0, i1, i2, i3) \
   __builtin_shuffle(a, b, (pd_sum4_lanes){i0, i1, i2, i3})
 #endif
@@ -100,11 +101,10 @@ PD_INLINE void pd_note_max(double *at, double value) { *at = value > *at ? value
 
 #if defined(PD_SUM4_SHUFFLE)
 /* Lane by lane pd_note_max as a compare and a blend. */
-typedef long long pd_sum4_mask __attribute__((vector_size(32)));
 PD_INLINE pd_sum4 pd_sum4_larger(pd_sum4 value, pd_sum4 at)
 {
-  const pd_sum4_mask larger = (pd_sum4_mask) (value > at);
-  return (pd_sum4) ((larger & (pd_sum4_mask) value) | (~larger & (pd_sum4_mask) at));
+  const pd_sum4_lanes larger = (pd_sum4_lanes) (value > at);
+  return (pd_sum4) ((larger & (pd_sum4_lanes) value) | (~larger & (pd_sum4_lanes) at));
 }
 #endif
 
@@ -117,8 +117,8 @@ PD_INLINE pd_sum4 pd_sum4_axpy_note(pd_sum4 r, double s, pd_sum4 a)
   const __m256d sum = _mm256_mask_add_pd(R, 0x7, R, _mm256_mul_pd(_mm256_set1_pd(s), A));
   return (pd_sum4) _mm256_mask_max_pd(sum, 0x8, A, sum);
 #elif defined(PD_SUM4_SHUFFLE)
-  /* (AVX2: lane by lane through memory, the note's max was a third of a
-   * noting law's scalar pass) */
+  /* (lane by lane through memory, it was more than half the time of a
+   * law that notes, on AVX2) */
   return PD_SUM4_SHUFFLE(r + s * a, pd_sum4_larger(a, r), 0, 1, 2, 7);
 #else
   double rv[4], av[4];
