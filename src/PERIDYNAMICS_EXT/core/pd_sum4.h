@@ -33,6 +33,13 @@ typedef long long pd_sum4_lanes __attribute__((vector_size(32)));
 #define PD_SUM4_SHUFFLE(a, b, i0, i1, i2, i3) \
   __builtin_shuffle(a, b, (pd_sum4_lanes){i0, i1, i2, i3})
 #endif
+/* lane by lane value > at ? value : at (pd_note_max below), as a compare
+ * and a blend */
+PD_INLINE pd_sum4 pd_sum4_larger(pd_sum4 value, pd_sum4 at)
+{
+  const pd_sum4_lanes larger = (pd_sum4_lanes) (value > at);
+  return (pd_sum4) ((larger & (pd_sum4_lanes) value) | (~larger & (pd_sum4_lanes) at));
+}
 #else
 typedef struct pd_sum4 { double v[4]; } pd_sum4;
 PD_INLINE pd_sum4 pd_sum4_make(double a0, double a1, double a2, double a3)
@@ -98,15 +105,6 @@ PD_INLINE void pd_sum4_transpose(const pd_sum4 c[4], pd_sum4 out[4])
  * branch: the notes of an unstrained block differ by round-off, and a
  * branch on them is a coin toss. */
 PD_INLINE void pd_note_max(double *at, double value) { *at = value > *at ? value : *at; }
-
-#if defined(PD_SUM4_SHUFFLE)
-/* Lane by lane pd_note_max as a compare and a blend. */
-PD_INLINE pd_sum4 pd_sum4_larger(pd_sum4 value, pd_sum4 at)
-{
-  const pd_sum4_lanes larger = (pd_sum4_lanes) (value > at);
-  return (pd_sum4) ((larger & (pd_sum4_lanes) value) | (~larger & (pd_sum4_lanes) at));
-}
-#endif
 
 /* Lanes 0-2 r + s a, lane 3 r's and a's pd_note_max: a far end's sum with
  * a bond's reaction and note. */
