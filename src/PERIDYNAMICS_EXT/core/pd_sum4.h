@@ -10,9 +10,12 @@
 
 #include <string.h>
 
-#if defined(__AVX512VL__) && (defined(__GNUC__) || defined(__clang__))
+#if defined(__AVX__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
+#define PD_SUM4_AVX 1
+#if defined(__AVX512VL__)
 #define PD_SUM4_AVX512 1
+#endif
 #endif
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -33,12 +36,18 @@ typedef long long pd_sum4_lanes __attribute__((vector_size(32)));
 #define PD_SUM4_SHUFFLE(a, b, i0, i1, i2, i3) \
   __builtin_shuffle(a, b, (pd_sum4_lanes){i0, i1, i2, i3})
 #endif
-/* lane by lane value > at ? value : at (pd_note_max below), as a compare
- * and a blend */
+/* lane by lane value > at ? value : at (pd_note_max below) */
 PD_INLINE pd_sum4 pd_sum4_larger(pd_sum4 value, pd_sum4 at)
 {
+#if defined(PD_SUM4_AVX)
+  /* (vmaxpd gives its second operand unless the first is larger, NaN and
+   * signed zeros alike: the same, in one instruction instead of a compare,
+   * a blend and a second load of 'at') */
+  return (pd_sum4) _mm256_max_pd((__m256d) value, (__m256d) at);
+#else
   const pd_sum4_lanes larger = (pd_sum4_lanes) (value > at);
   return (pd_sum4) ((larger & (pd_sum4_lanes) value) | (~larger & (pd_sum4_lanes) at));
+#endif
 }
 #else
 typedef struct pd_sum4 { double v[4]; } pd_sum4;
@@ -132,9 +141,7 @@ PD_INLINE pd_sum4 pd_sum4_axpy_note(pd_sum4 r, double s, pd_sum4 a)
 /* Lane by lane pd_note_max of b's and a's (a's where larger). */
 PD_INLINE pd_sum4 pd_sum4_max(pd_sum4 a, pd_sum4 b)
 {
-#if defined(PD_SUM4_AVX512)
-  return (pd_sum4) _mm256_max_pd((__m256d) a, (__m256d) b);
-#elif defined(PD_SUM4_SHUFFLE)
+#if defined(PD_SUM4_SHUFFLE)
   return pd_sum4_larger(a, b);
 #else
   double av[4], bv[4];
