@@ -61,7 +61,7 @@ int main(void)
   /* the rule itself: a NaN note never replaces a number, a number never
    * replaces a kept NaN, and -0 does not replace +0 */
   check_true("a NaN note is ignored", note_max(1.0, NAN) == 1.0);
-  check_true("a kept NaN stays", note_max(NAN, 1.0) != note_max(NAN, 1.0));
+  check_true("a kept NaN stays", isnan(note_max(NAN, 1.0)));
   check_true("-0 does not replace +0", !signbit(note_max(0.0, -0.0)));
   check_true("+0 does not replace -0", signbit(note_max(-0.0, 0.0)));
   return check_summary();
