@@ -9,6 +9,8 @@ LAMMPS_SOURCE_DIR ?=
 # for binaries and plugins copied to other machines
 PORTABLE          ?= 0
 FULL              ?= 0
+# make bench PASSES=N: passes over the block's styles (3; more on a noisy machine)
+PASSES            ?= 3
 
 # ccache keeps compiled LAMMPS objects outside the work tree, so a fresh clone
 # recompiles nothing that did not change.
@@ -54,7 +56,7 @@ demo: build
 # The benchmark block's tables (1-3 minutes); FULL=1 adds the size sweep,
 # family build, memory per bond and 2 ranks (5-13 minutes). bench/README.md
 bench: build
-	FULL=$(FULL) ./bench/run.sh $(LMP)
+	FULL=$(FULL) PASSES=$(PASSES) ./bench/run.sh $(LMP)
 
 # Accuracy against cost: the sweeps (about 3 hours on 2 cores), the report
 # with its Pareto plots and recommendation table in build/accuracy/report.md

@@ -494,6 +494,8 @@ def main():
                     help="the time of the tables: the timed run's CPU time (default) or its Loop time")
     ap.add_argument("--logs", help="keep the LAMMPS logs here (default: a new temporary directory)")
     args = ap.parse_args()
+    if args.passes < 1:
+        ap.error(f"--passes {args.passes}: expected a whole number of passes, at least 1")
     CLOCK = args.clock
     lmp = os.path.realpath(args.lmp)
     outdir = args.logs or tempfile.mkdtemp(prefix="pdext-bench-")
