@@ -9,8 +9,9 @@ LAMMPS_SOURCE_DIR ?=
 # for binaries and plugins copied to other machines
 PORTABLE          ?= 0
 FULL              ?= 0
-# make bench PASSES=N: passes over the block's styles (3; more on a noisy machine)
-PASSES            ?= 3
+# make bench PASSES=N: passes over the block's styles (bench/report.py's
+# default, 3, when empty; more on a noisy machine)
+PASSES            ?=
 
 # ccache keeps compiled LAMMPS objects outside the work tree, so a fresh clone
 # recompiles nothing that did not change.

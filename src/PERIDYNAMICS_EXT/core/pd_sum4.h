@@ -36,19 +36,6 @@ typedef long long pd_sum4_lanes __attribute__((vector_size(32)));
 #define PD_SUM4_SHUFFLE(a, b, i0, i1, i2, i3) \
   __builtin_shuffle(a, b, (pd_sum4_lanes){i0, i1, i2, i3})
 #endif
-/* lane by lane value > at ? value : at (pd_note_max below) */
-PD_INLINE pd_sum4 pd_sum4_larger(pd_sum4 value, pd_sum4 at)
-{
-#if defined(PD_SUM4_AVX)
-  /* (vmaxpd gives its second operand unless the first is larger, NaN and
-   * signed zeros alike: the same, in one instruction instead of a compare,
-   * a blend and a second load of 'at') */
-  return (pd_sum4) _mm256_max_pd((__m256d) value, (__m256d) at);
-#else
-  const pd_sum4_lanes larger = (pd_sum4_lanes) (value > at);
-  return (pd_sum4) ((larger & (pd_sum4_lanes) value) | (~larger & (pd_sum4_lanes) at));
-#endif
-}
 #else
 typedef struct pd_sum4 { double v[4]; } pd_sum4;
 PD_INLINE pd_sum4 pd_sum4_make(double a0, double a1, double a2, double a3)
@@ -115,6 +102,27 @@ PD_INLINE void pd_sum4_transpose(const pd_sum4 c[4], pd_sum4 out[4])
  * branch on them is a coin toss. */
 PD_INLINE void pd_note_max(double *at, double value) { *at = value > *at ? value : *at; }
 
+/* Lane by lane pd_note_max: at's lanes, or value's where larger. */
+PD_INLINE pd_sum4 pd_sum4_max(pd_sum4 value, pd_sum4 at)
+{
+#if defined(PD_SUM4_AVX)
+  /* (vmaxpd gives its second operand unless the first is larger, NaN and
+   * signed zeros alike: the same, in one instruction instead of a compare,
+   * a blend and a second load of 'at') */
+  return (pd_sum4) _mm256_max_pd((__m256d) value, (__m256d) at);
+#elif defined(PD_SUM4_SHUFFLE)
+  const pd_sum4_lanes larger = (pd_sum4_lanes) (value > at);
+  return (pd_sum4) ((larger & (pd_sum4_lanes) value) | (~larger & (pd_sum4_lanes) at));
+#else
+  double vv[4], av[4];
+  memcpy(vv, &value, sizeof vv);
+  memcpy(av, &at, sizeof av);
+  for (int c = 0; c < 4; c++) pd_note_max(&av[c], vv[c]);
+  memcpy(&at, av, sizeof av);
+  return at;
+#endif
+}
+
 /* Lanes 0-2 r + s a, lane 3 r's and a's pd_note_max: a far end's sum with
  * a bond's reaction and note. */
 PD_INLINE pd_sum4 pd_sum4_axpy_note(pd_sum4 r, double s, pd_sum4 a)
@@ -126,7 +134,7 @@ PD_INLINE pd_sum4 pd_sum4_axpy_note(pd_sum4 r, double s, pd_sum4 a)
 #elif defined(PD_SUM4_SHUFFLE)
   /* (lane by lane through memory, it was more than half the time of a
    * law that notes, on AVX2) */
-  return PD_SUM4_SHUFFLE(r + s * a, pd_sum4_larger(a, r), 0, 1, 2, 7);
+  return PD_SUM4_SHUFFLE(r + s * a, pd_sum4_max(a, r), 0, 1, 2, 7);
 #else
   double rv[4], av[4];
   memcpy(rv, &r, sizeof rv);
@@ -135,21 +143,6 @@ PD_INLINE pd_sum4 pd_sum4_axpy_note(pd_sum4 r, double s, pd_sum4 a)
   pd_note_max(&rv[3], av[3]);
   memcpy(&r, rv, sizeof rv);
   return r;
-#endif
-}
-
-/* Lane by lane pd_note_max of b's and a's (a's where larger). */
-PD_INLINE pd_sum4 pd_sum4_max(pd_sum4 a, pd_sum4 b)
-{
-#if defined(PD_SUM4_SHUFFLE)
-  return pd_sum4_larger(a, b);
-#else
-  double av[4], bv[4];
-  memcpy(av, &a, sizeof av);
-  memcpy(bv, &b, sizeof bv);
-  for (int c = 0; c < 4; c++) pd_note_max(&bv[c], av[c]);
-  memcpy(&b, bv, sizeof bv);
-  return b;
 #endif
 }
 
