@@ -746,6 +746,7 @@ pd_failure PairPD::failure_state()
   zero_released();
   pd_failure f = recontact_state();
   f.params = law->evaluation();
+  f.law = law->kernels();
   f.note_atom = law->notes();
   f.released_atom = released;
   f.fresh = fresh;

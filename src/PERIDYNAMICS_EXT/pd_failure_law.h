@@ -95,6 +95,9 @@ class PDFailureLaw : protected Pointers {
   virtual void setup_run() {}                          // all ranks, first compute of a run
   virtual const void *evaluation() { return nullptr; } // the core's parameter struct for one evaluation
   virtual double *notes() { return nullptr; }          // its per-atom notes then (pd_failure.note_atom)
+  // the row of core/pd_laws.h whose kernels run that evaluation: its own,
+  // or another law's that makes the same test then
+  virtual pd_fail_law kernels() const { return id; }
   virtual void after_evaluation() {}                   // what follows it (all ranks)
   virtual void report() const {}                       // its line in the setup report (rank 0)
   // which lattice sum (core/pd_orientation.h, pd_release_kind) gives the

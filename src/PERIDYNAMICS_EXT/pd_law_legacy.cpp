@@ -4,8 +4,9 @@
    s0 (atom->s0, as PERI): the largest s00 - alpha stretch over its intact
    bonds of the previous step. With alpha 0 and one s00 for all type pairs
    that is s00 for every atom, PERI's value too: the law then takes no
-   notes of the bonds (bench: 1.07-1.11x of the run without the law,
-   against 1.13-1.18x with alpha > 0).
+   notes of the bonds, and once every atom's s0 is s00 its test is the
+   critical stretch s00 applied after the force acted, so it runs the
+   critical stretch's kernels (core/pd_law_stretch.h, 'after').
 ------------------------------------------------------------------------- */
 
 #include "pd_failure_law.h"
@@ -21,6 +22,7 @@
 
 extern "C" {
 #include "pd_law_legacy.h"
+#include "pd_law_stretch.h"
 }
 
 using namespace LAMMPS_NS;
@@ -60,7 +62,8 @@ class LawLegacy : public PDFailureLaw {
                  "pair style keyword", style(), i, j);
   }
 
-  // alpha 0 and one s00 for all type pairs: every atom's s0 is s00
+  // alpha 0 and one s00 for all type pairs: every atom's s0 is s00 after
+  // the first evaluation
   void setup_run() override
   {
     fixed = true;
@@ -76,7 +79,9 @@ class LawLegacy : public PDFailureLaw {
   {
     if (fixed)
       utils::logmesg(lmp, "{}: fail legacy: alpha 0 and s00 {} for all type pairs: every atom's s0 "
-                     "is s00, no notes per bond\n", style(), s00);
+                     "is s00, no notes per bond{}\n", style(), s00,
+                     s00 > 0.0 ? "; once every s0 is s00, the critical stretch s00 applied after "
+                                 "the force acted" : "");
     else
       utils::logmesg(lmp, "{}: fail legacy: each atom's s0 from its bonds' stretch every step "
                      "(PERI's s00 - alpha stretch)\n", style());
@@ -85,6 +90,14 @@ class LawLegacy : public PDFailureLaw {
   const void *evaluation() override
   {
     const int nall = atom->nlocal + atom->nghost;
+    // (an atom made in the run, or the first evaluation, may have another
+    // s0: then this law's own kernels, without notes; the stretch's screen
+    // takes s0 > 0)
+    as_stretch = fixed && s00 > 0.0 && every_s0_is_s00(nall);
+    if (as_stretch) {
+      stretch = {table(S00), 1};
+      return &stretch;
+    }
     // (the force loop writes every entry, owned and ghost)
     if (!fixed && atom->nmax > nmax) {
       nmax = atom->nmax;
@@ -95,6 +108,7 @@ class LawLegacy : public PDFailureLaw {
     return &params;
   }
   double *notes() override { return fixed ? nullptr : s0_new; }
+  pd_fail_law kernels() const override { return as_stretch ? PD_FAIL_STRETCH : id; }
 
   // each atom's s0 for the next step: PERI's max over its intact bonds
   void after_evaluation() override
@@ -109,10 +123,20 @@ class LawLegacy : public PDFailureLaw {
 
  private:
   pd_law_legacy params;
+  pd_law_stretch stretch;
   bool fixed = false;          // every atom's s0 is s00 (setup_run) ...
   double s00 = 0.0;            // ... this one
+  bool as_stretch = false;     // this evaluation runs the critical stretch's kernels
   double *s0_new = nullptr;    // per atom new s0 (owned + ghost)
   int nmax = 0;
+
+  bool every_s0_is_s00(int nall) const
+  {
+    const double *s0 = atom->s0;
+    int same = 1;
+    for (int a = 0; a < nall; a++) same &= s0[a] == s00;
+    return same;
+  }
 };
 
 }    // namespace

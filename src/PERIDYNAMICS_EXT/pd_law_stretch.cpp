@@ -85,7 +85,7 @@ class LawStretch : public PDFailureLaw {
 
   const void *evaluation() override
   {
-    params = {table(S0)};
+    params = {table(S0), 0};
     return &params;
   }
 

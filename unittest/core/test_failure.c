@@ -131,7 +131,7 @@ int main(void)
     pd_bond_view v = lattice_view(&l);
     pd_pmb mat = {&c};
     double x[6] = {0, 0, 0, h * 1.009, 0, 0}, f[6] = {0};
-    const pd_law_stretch stretch = {&s0};
+    pd_law_stretch stretch = {&s0, 0};
     pd_failure fail = {.law = PD_FAIL_STRETCH, .params = &stretch, .recontact = 1, .len0 = l.len0};
     pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, &fail, l.reaction, l.natoms}, &mat);
     check_true("PMB: below s0 nothing breaks", fail.nbroken == 0 && l.len0[0] > 0.0);
@@ -141,6 +141,22 @@ int main(void)
     const double sb = 0.011;
     check_rel("PMB: released energy 1/2 c s^2 |xi| V_i V_j", fail.released_joule,
               0.5 * c * sb * sb * h * 2e-9 * 3e-9, 1e-9);
+    /* 'after' (PERI's rule at alpha 0): the breaking bond acts with its
+     * whole force first, twice the half it acts with by default */
+    double fx[2];
+    for (int after = 0; after < 2; after++) {
+      l.len0[0] = h;
+      f[0] = 0.0;
+      stretch.after = after;
+      pd_failure fa = {.law = PD_FAIL_STRETCH, .params = &stretch, .recontact = 1, .len0 = l.len0};
+      pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, &fa, l.reaction, l.natoms}, &mat);
+      check_true(after ? "PMB, after: above s0 the bond breaks" : "PMB, now: above s0 the bond breaks",
+                 fa.nbroken == 1 && l.len0[0] < 0.0);
+      fx[after] = f[0];
+    }
+    check_rel("PMB: a bond that breaks after acts with twice the force of one that breaks now",
+              fx[1], 2.0 * fx[0], 1e-14);
+    check_true("PMB: that force pulls i towards j", fx[0] > 0.0);
     l.natoms = 8;
     lattice_free(&l);
   }
@@ -174,7 +190,11 @@ int main(void)
     const pd_law_legacy legacy = {s00, alpha, s0_atom, pd_failure_floor(s0_atom, NATOM)};
     const pd_law_energy energy = {crit, pd_failure_floor(crit, NATOM), gc};
     const pd_failure fl = {.law = PD_FAIL_LEGACY, .params = &legacy}, fe = {.law = PD_FAIL_ENERGY, .params = &energy};
-    int missed = 0, screened_legacy = 0, screened_energy = 0;
+    /* the critical stretch, breaking now or after */
+    const pd_law_stretch stretch[2] = {{s00, 0}, {s00, 1}};
+    const pd_failure fs[2] = {{.law = PD_FAIL_STRETCH, .params = &stretch[0]},
+                              {.law = PD_FAIL_STRETCH, .params = &stretch[1]}};
+    int missed = 0, screened_legacy = 0, screened_energy = 0, screened_stretch = 0, broke_stretch[2] = {0, 0};
     for (int k = 0; k < NBOND; k++) {
       pd_bond bd = {0};
       bd.i = rand() % NATOM;
@@ -189,10 +209,20 @@ int main(void)
                 !pd_law_legacy_ahead(&fl, &bd, eps, &bf);
       missed += (pd_law_energy_now(&fe, &bd, eps, &bf) | pd_law_energy_after(&fe, &bd, eps)) &&
                 !pd_law_energy_ahead(&fe, &bd, eps, &bf);
+      for (int a = 0; a < 2; a++) {
+        const int now = pd_law_stretch_now(&fs[a], &bd, eps, &bf), after = pd_law_stretch_after(&fs[a], &bd, eps);
+        missed += (now | after) && !pd_law_stretch_ahead(&fs[a], &bd, eps, &bf);
+        broke_stretch[a] += a ? after && !now : now && !after;
+      }
+      screened_stretch += !pd_law_stretch_ahead(&fs[0], &bd, eps, &bf);
       screened_legacy += !pd_law_legacy_ahead(&fl, &bd, eps, &bf);
       screened_energy += !pd_law_energy_ahead(&fe, &bd, eps, &bf);
     }
-    check_true("screens: no bond that breaks is screened out (PERI's rule, energy law)", missed == 0);
+    check_true("screens: no bond that breaks is screened out (PERI's rule, energy law, stretch)", missed == 0);
+    check_true("screens: the stretch's screens out a bond below s0",
+               screened_stretch > 0 && screened_stretch < NBOND);
+    check_true("stretch: some bonds break now (after: none), some after (now: none)",
+               broke_stretch[0] > 0 && broke_stretch[1] == broke_stretch[0]);
     check_true("screens: PERI's rule's screens out a bond below every atom's s0",
                screened_legacy > 0 && screened_legacy < NBOND);
     check_true("screens: the energy law's screens out a bond below every pair's threshold",

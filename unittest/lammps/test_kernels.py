@@ -31,6 +31,11 @@ CASES = {
     "pd/bond legacy PERI's rule": ("pair_style pd/bond legacy\n"
                                    "pair_coeff * * pmb K 14.9e9 horizon 0.0015001 "
                                    "fail legacy 0.0005 0.25\n"),
+    # alpha 0: from the second step the critical stretch's kernels, the
+    # bond breaking after its force acted
+    "pd/bond legacy PERI's rule alpha 0": ("pair_style pd/bond legacy\n"
+                                           "pair_coeff * * pmb K 14.9e9 horizon 0.0015001 "
+                                           "fail legacy 0.0005 0\n"),
     "pd/ordinary m 0 stretch": ("pair_style pd/ordinary\n"
                                 "pair_coeff * * K 14.9e9 G 8.94e9 horizon 0.0015001 m 0 "
                                 "fail stretch 0.0004\n"),

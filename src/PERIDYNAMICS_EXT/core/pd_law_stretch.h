@@ -1,5 +1,7 @@
 /* Critical stretch (MS07 eq. 25-29): an intact bond breaks once its stretch
- * exceeds s0 of its type pair, in the evaluation where it does. */
+ * exceeds s0 of its type pair, in the evaluation where it does; with
+ * 'after', once its force acted (PERI's rule whose s0 is s00 for every
+ * atom: pd_law_legacy.cpp runs it so, without per-bond notes). */
 #ifndef PD_LAW_STRETCH_H
 #define PD_LAW_STRETCH_H
 
@@ -7,6 +9,7 @@
 
 typedef struct pd_law_stretch {
   const double *s0;    /* per type pair (+inf: the pair does not fail) */
+  int after;           /* the bond breaks after its force acted, not before */
 } pd_law_stretch;
 
 static inline int pd_law_stretch_now(const pd_failure *f, const pd_bond *bd, double eps,
@@ -14,17 +17,20 @@ static inline int pd_law_stretch_now(const pd_failure *f, const pd_bond *bd, dou
 {
   (void) eps, (void) bf;
   const pd_law_stretch *p = (const pd_law_stretch *) f->params;
-  return pd_bond_stretch(bd) > p->s0[bd->tij];
+  return !p->after && pd_bond_stretch(bd) > p->s0[bd->tij];
 }
 
+/* (a test per bond here costs nothing: only bonds that the screen below
+ * lets through, and rows with broken bonds, come bond by bond) */
 static inline int pd_law_stretch_after(const pd_failure *f, const pd_bond *bd, double eps)
 {
-  (void) f, (void) bd, (void) eps;
-  return 0;
+  (void) eps;
+  const pd_law_stretch *p = (const pd_law_stretch *) f->params;
+  return p->after && pd_bond_stretch(bd) > p->s0[bd->tij];
 }
 
 /* |Y| - |xi| > s0 |xi|, with s0 (> 0) a little smaller: every bond that
- * _now breaks passes (its stretch is within a few ulps of this quotient), and
+ * _now or _after breaks passes (its stretch is within a few ulps of this quotient), and
  * an elastic step computes no stretch for it (pd/bond's cost of the law
  * on AVX2 1.24x -> 1.06-1.14x) */
 static inline int pd_law_stretch_ahead(const pd_failure *f, const pd_bond *bd, double eps,
