@@ -268,6 +268,50 @@ int main(void)
     free(x);
     free(ab);
   }
+  /* The sums pass takes a row's chunk either in two passes (vectorized
+   * values, scalar sums) or, when a bond in it is broken, bond by bond.
+   * Both add in the same order onto the same two halves of the sum on i,
+   * so the dilatation sums are the same to the bit: with every row's last
+   * bond broken (adding nothing: no recontact), bond by bond, and with the
+   * rows cut before it, in two passes. Rows of more than one chunk
+   * (PD_CHUNK, 64 bonds) and odd lengths meet. */
+  {
+    lattice l = lattice_make(3, 9, h, 3.5001 * h, PD_INFLUENCE_INVERSE);
+    const int n = l.natoms;
+    double *x = malloc(sizeof(double) * 3 * n), *sum[2];
+    int *cut = malloc(sizeof(int) * n), longest = 0, odd = 0;
+    unsigned seed = 17;
+    for (int a = 0; a < 3 * n; a++) x[a] = l.x0[a] + 1e-3 * h * urand(&seed);
+    for (int a = 0; a < n; a++) {
+      cut[a] = l.count[a] > 0 ? l.count[a] - 1 : 0;
+      longest = cut[a] > longest ? cut[a] : longest;
+      odd += cut[a] % 2;
+    }
+    for (int broken = 0; broken < 2; broken++) {
+      sum[broken] = calloc(n, sizeof(double));
+      pd_bond_view v = lattice_view(&l);
+      if (!broken) v.count = cut;
+      for (int a = 0; broken && a < n; a++)
+        if (l.count[a]) l.len0[a * l.stride + l.count[a] - 1] *= -1.0;
+      pd_failure fail = {.law = PD_FAIL_STRETCH, .recontact = 0, .len0 = l.len0};
+      pd_ordinary_state st = {0.5, sum[broken], NULL, NULL, 0};
+      const pd_loop L = {&v, l.type, 1, x, l.vol, NULL, NULL, broken ? &fail : NULL, l.reaction, n};
+      pd_ordinary_dilatation(&L, &st);
+      for (int a = 0; broken && a < n; a++)
+        if (l.count[a]) l.len0[a * l.stride + l.count[a] - 1] *= -1.0;
+    }
+    /* (the last atom's bonds are each the last of their rows: its sum is 0) */
+    int nonzero = 0;
+    for (int a = 0; a < n; a++) nonzero += sum[0][a] != 0.0;
+    check_true("sums pass: rows of 65 or more bonds and rows of odd length", longest > 64 && odd > 0);
+    check_true("sums pass: dilatation sums bond by bond equal the two passes' to the bit",
+               nonzero == n - 1 && memcmp(sum[0], sum[1], sizeof(double) * n) == 0);
+    lattice_free(&l);
+    free(x);
+    free(cut);
+    free(sum[0]);
+    free(sum[1]);
+  }
   /* One B for all atoms (pd_ordinary_state.uniform_b): the m = 1/2 force
    * pass takes the owner's B for the far end's. With every B equal the
    * forces are the same to the bit, vectorized and bond by bond; with B

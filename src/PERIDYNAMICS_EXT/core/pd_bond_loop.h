@@ -517,13 +517,29 @@ pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int
                               mat, strain, value, weighted, failing);
 }
 
+/* A chunk's second pass for one bond, its values t and far end j: t V_j
+ * onto si, t V_i onto j's sum. */
+PD_INLINE void
+pd_scatter_sum(double *restrict si, double *restrict sum, int width, const double *restrict t,
+               int j, const double *restrict vol, double vi)
+{
+  const double vj = vol[j];
+  double *restrict sj = sum + width * (ptrdiff_t) j;
+  for (int c = 0; c < width; c++) {
+    si[c] += t[c] * vj;
+    sj[c] += t[c] * vi;
+  }
+}
+
 /* The same in the current configuration, over the bonds that act (a broken
  * bond only in compression, with recontact): value(ctx, bond, strain, t)
  * gives 'width' numbers t, added as t V_j onto sum[i * width ..] and t V_i
  * onto sum[j * width ..]. A state-based material's first pass (dilatation,
  * deformation gradient); types are not loaded. Rows go in chunks as in
  * pd_force_loop_on: a vectorizable pass computes the values, a scalar one
- * adds them in the order and with the arithmetic of bond by bond. */
+ * adds them in the order and with the arithmetic of bond by bond. The sum
+ * on i goes in two halves, as the force loop's (bonds 0, 2, 4 .. of a row
+ * and 1, 3, ..): a width of 1 waited on one chain of adds. */
 PD_INLINE void
 pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
                    pd_strain_fn strain, pd_bond_strain_value_fn value, int weighted, int failing)
@@ -537,29 +553,28 @@ pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
     const double vi = vol[i];
     bd.i = i;
     bd.ti = 0;
-    double si[PD_MAX_SUM_WIDTH];
-    for (int c = 0; c < width; c++) si[c] = 0.0;
+    /* (two arrays, not one of two: indexed by k & 1 they lived in memory) */
+    double even[PD_MAX_SUM_WIDTH], odd[PD_MAX_SUM_WIDTH];
+    for (int c = 0; c < width; c++) even[c] = odd[c] = 0.0;
     const double xi[3] = {L->x[3 * i], L->x[3 * i + 1], L->x[3 * i + 2]};
     for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
       const int m = n - k0 < PD_CHUNK ? n - k0 : PD_CHUNK;
       if (!pd_current_sum_chunk(L, width, xi, i, row + k0, m, tb, mat, strain, value, weighted,
                                 failing)) {
-        for (int k = 0; k < m; k++) {
-          const int j = b->far[row + k0 + k];
-          const double vj = vol[j];
-          double *restrict sj = sum + width * (ptrdiff_t) j;
-          for (int c = 0; c < width; c++) {
-            si[c] += tb[k * width + c] * vj;
-            sj[c] += tb[k * width + c] * vi;
-          }
+        const int *restrict far = b->far + row + k0;
+        int k = 0;
+        for (; k + 1 < m; k += 2) {
+          pd_scatter_sum(even, sum, width, tb + k * width, far[k], vol, vi);
+          pd_scatter_sum(odd, sum, width, tb + (k + 1) * width, far[k + 1], vol, vi);
         }
+        if (k < m) pd_scatter_sum(even, sum, width, tb + k * width, far[k], vol, vi);
         continue;
       }
       for (int k = 0; k < m; k++)
-        pd_current_sum_bond(L, sum, si, width, xi, &bd, row + k0 + k, mat, strain, value,
-                            weighted, failing);
+        pd_current_sum_bond(L, sum, k & 1 ? odd : even, width, xi, &bd, row + k0 + k, mat, strain,
+                            value, weighted, failing);
     }
-    for (int c = 0; c < width; c++) sum[i * width + c] += si[c];
+    for (int c = 0; c < width; c++) sum[i * width + c] += even[c] + odd[c];
   }
 }
 
