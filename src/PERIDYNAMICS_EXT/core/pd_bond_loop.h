@@ -186,17 +186,19 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
                pd_force_fn force, pd_may_break_fn may_break, pd_law_notes_fn notes, int weighted,
                int failing, int tallied)
 {
-  /* (64 bits wide, as the tests' masks are: an int made AVX2 pack them) */
+  /* (64 bits wide, as the tests' masks are: an int made AVX2 pack them;
+   * each test negated, so that its mask (-1) is ORed in as it is, not
+   * first made 1: PERI's rule's kernel 1% fewer instructions) */
   long long special = 0;
   for (int k = 0; k < m; k++) {
     pd_bond bd;
     bd.i = i;
     bd.ti = ti;
-    special |= (long long) pd_bond_load_ahead(&bd, b, type, trow, x, xi, row + k, weighted, failing);
+    special |= -(long long) pd_bond_load_ahead(&bd, b, type, trow, x, xi, row + k, weighted, failing);
     const double eps = strain(mat, &bd);
     const pd_bond_force bf = force(mat, &bd, eps);
     if (failing) {
-      special |= (long long) may_break(fail, &bd, eps, &bf);
+      special |= -(long long) may_break(fail, &bd, eps, &bf);
       g[3 * PD_CHUNK + k] = notes(fail, &bd);    /* (whether or not the law notes: a
                                                   * condition here stops the vectorizer) */
     }
