@@ -483,15 +483,15 @@ pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int
                      pd_bond_strain_value_fn value, int weighted, int failing)
 {
   const pd_bond_view *restrict b = L->b;
-  int broken = 0;
+  long long broken = 0;    /* (as pd_force_chunk's 'special') */
   for (int k = 0; k < m; k++) {
     pd_bond bd;
     bd.i = i;
     bd.ti = 0;
-    broken |= pd_bond_load_ahead(&bd, b, NULL, 0, L->x, xi, row + k, weighted, failing);
+    broken |= -(long long) pd_bond_load_ahead(&bd, b, NULL, 0, L->x, xi, row + k, weighted, failing);
     value(mat, &bd, strain(mat, &bd), tb + k * width);
   }
-  return broken;
+  return broken != 0;
 }
 
 /* Bonds a first pass takes as one vector (AVX-512: 16, as two registers
