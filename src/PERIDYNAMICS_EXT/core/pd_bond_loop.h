@@ -452,6 +452,21 @@ pd_reference_sums(const pd_bond_view *restrict b, const int *type, int ntypes,
 enum { PD_MAX_SUM_WIDTH = 48 };
 typedef void (*pd_bond_strain_value_fn)(void *ctx, const pd_bond *bd, double eps, double *t);
 
+/* One bond's values t onto its two ends: t V_j onto si (atom i's), t V_i
+ * onto j's sum. Both ways of pd_current_sums add through it, so they agree
+ * to the bit. */
+PD_INLINE void
+pd_scatter_sum(double *restrict si, double *restrict sum, int width, const double *restrict t,
+               int j, const double *restrict vol, double vi)
+{
+  const double vj = vol[j];
+  double *restrict sj = sum + width * (ptrdiff_t) j;
+  for (int c = 0; c < width; c++) {
+    si[c] += t[c] * vj;
+    sj[c] += t[c] * vi;
+  }
+}
+
 /* One bond of pd_current_sums: its values onto sum[j] and si (atom i's). */
 PD_INLINE void
 pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si, int width,
@@ -467,11 +482,7 @@ pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si,
   const double eps = strain(mat, bd);
   if (failing && pd_bond_inactive(L->fail, bd->broken, eps)) return;
   value(mat, bd, eps, t);
-  const double vj = L->vol[bd->j], vi = L->vol[bd->i];
-  for (int c = 0; c < width; c++) {
-    si[c] += t[c] * vj;
-    sum[bd->j * width + c] += t[c] * vi;
-  }
+  pd_scatter_sum(si, sum, width, t, bd->j, L->vol, L->vol[bd->i]);
 }
 
 /* Its first pass over bonds k0 .. k0+m-1 of a row, as pd_force_chunk: the
@@ -517,20 +528,6 @@ pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int
                               failing) ||
          pd_current_sum_bonds(L, width, xi, i, row + last, PD_VECTOR_BONDS, tb + last * width,
                               mat, strain, value, weighted, failing);
-}
-
-/* A chunk's second pass for one bond, its values t and far end j: t V_j
- * onto si, t V_i onto j's sum. */
-PD_INLINE void
-pd_scatter_sum(double *restrict si, double *restrict sum, int width, const double *restrict t,
-               int j, const double *restrict vol, double vi)
-{
-  const double vj = vol[j];
-  double *restrict sj = sum + width * (ptrdiff_t) j;
-  for (int c = 0; c < width; c++) {
-    si[c] += t[c] * vj;
-    sj[c] += t[c] * vi;
-  }
 }
 
 /* The same in the current configuration, over the bonds that act (a broken
