@@ -204,7 +204,7 @@ int main(void)
       bd.r0 = 1.0;
       bd.len = 1.0 + 0.008 * rand() / RAND_MAX - 0.001;
       const double eps = pd_bond_stretch(&bd), e = 4.0 * rand() / RAND_MAX;
-      const pd_bond_force bf = {0.0, 0.0, 0.0, e, 0.5 * e, {0.0, 0.0, 0.0}};
+      const pd_bond_force bf = {.release_i = e, .release_j = 0.5 * e, .release = e + 0.5 * e};
       missed += (pd_law_legacy_now(&fl, &bd, eps, &bf) | pd_law_legacy_after(&fl, &bd, eps)) &&
                 !pd_law_legacy_ahead(&fl, &bd, eps, &bf);
       missed += (pd_law_energy_now(&fe, &bd, eps, &bf) | pd_law_energy_after(&fe, &bd, eps)) &&

@@ -34,7 +34,8 @@ static inline pd_bond_force pmb_bond(double c, double s, double sl, const pd_bon
 {
   const double t = c * s * bd->w;
   const double e = 0.25 * t * s * bd->r0;
-  const pd_bond_force bf = {c * sl * bd->w, e, e, e, e, {0.0, 0.0, 0.0}};
+  const pd_bond_force bf = {.tl = c * sl * bd->w, .stored_i = e, .stored_j = e,
+                            .release_i = e, .release_j = e, .release = e + e};
   return bf;
 }
 

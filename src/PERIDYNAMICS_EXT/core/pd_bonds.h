@@ -67,6 +67,9 @@ typedef struct pd_bond_force {
   double stored_i, stored_j;   /* energy density it stores at each end, per
                                   unit volume of the partner (tallied) */
   double release_i, release_j; /* what it releases at each end if it breaks now */
+  double release;              /* their sum, as the energy law tests it: in
+                                  the material's cheapest form (pd/ordinary's
+                                  shares the force's sums of both ends) */
   double v[3];                 /* a directed material's force instead of t (not
                                   along the bond): f_i += V_j v, f_j -= V_i v */
 } pd_bond_force;

@@ -182,6 +182,7 @@ extended_force(const pd_corr_state *st, const pd_bond *bd, double eps, int kind,
   /* the instantaneous bond energy d psi / d phi at each end ('fail energy') */
   bf.release_i = bd->w * eps * si;
   bf.release_j = bd->w * eps * sj;
+  bf.release = bd->w * eps * (si + sj);
   return bf;
 }
 

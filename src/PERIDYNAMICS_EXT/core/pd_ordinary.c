@@ -40,6 +40,7 @@ ordinary_bond(int kind, int uniform_b, const pd_ordinary_state *st, const pd_bon
   bf.stored_j = we2 * bj;
   bf.release_i = w * eps * (ai + 0.5 * bi * eps);
   bf.release_j = w * eps * (aj + 0.5 * bj * eps);
+  bf.release = w * eps * (ai + aj + 0.5 * (bi + bj) * eps);
   return bf;
 }
 
