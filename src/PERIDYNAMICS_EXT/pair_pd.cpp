@@ -846,13 +846,15 @@ const double *PairPD::contact_radii()
   return radius;
 }
 
-// The force loop's scratch (pd_loop.reaction): 4 doubles per atom, owned + ghost.
+// The force loop's scratch (pd_loop.reaction): 4 doubles per atom, owned +
+// ghost, zero between evaluations (the loop leaves it so).
 double *PairPD::reactions()
 {
   if (atom->nmax > nreaction) {
     nreaction = atom->nmax;
     memory->destroy(reaction);
     memory->create(reaction, 4 * nreaction, "pair:reaction");
+    std::fill_n(reaction, 4 * (size_t) nreaction, 0.0);
   }
   return reaction;
 }

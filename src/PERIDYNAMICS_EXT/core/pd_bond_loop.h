@@ -155,6 +155,21 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
 /* Bonds a row's first pass takes at a time (its buffers live on the stack). */
 enum { PD_CHUNK = 64 };
 
+/* Bonds a first pass takes as one vector (AVX-512: 16, as two registers
+ * of 8 doubles, their far ends' indices in one). */
+enum { PD_VECTOR_BONDS = 16 };
+
+/* A first pass takes a chunk of m bonds in whole vectors: those that fit,
+ * then its last PD_VECTOR_BONDS bonds once more as one (the overlap
+ * computed again, to the same numbers); else its last bonds went one by
+ * one (a row of 61 bonds: 48 in vectors of 16, 8 in one of 8 and 5
+ * alone). Returns where that last vector starts, or -1 when m takes no
+ * such vector (at most one vector, or whole vectors only). */
+PD_INLINE int pd_vector_overlap(int m)
+{
+  return m <= PD_VECTOR_BONDS || m % PD_VECTOR_BONDS == 0 ? -1 : m - PD_VECTOR_BONDS;
+}
+
 /* A first pass's load: pd_bond_load with the current separation, a broken
  * bond (possible only when 'failing') not decoded but flagged (returns 1;
  * its length made positive so that the pass stays finite): the caller then
@@ -176,7 +191,7 @@ pd_bond_load_ahead(pd_bond *bd, const pd_bond_view *restrict b, const int *restr
   return broken;
 }
 
-/* The first pass over bonds k0 .. k0+m-1 of row 'row': every intact bond's
+/* The first pass over bonds row .. row+m-1 (of one row): every intact bond's
  * force on i per V_i V_j into g (component c of bond k at c * PD_CHUNK + k)
  * and, for the failure law's note, what it notes (at 3 * PD_CHUNK + k);
  * when 'tallied', its t / |Y| and the energies it stores at both ends (at
@@ -186,11 +201,11 @@ pd_bond_load_ahead(pd_bond *bd, const pd_bond_view *restrict b, const int *restr
  * might break now or after (the law's screen, _ahead): the caller then
  * takes the chunk bond by bond instead. */
 PD_INLINE int
-pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int trow, int ti,
+pd_force_bonds(const pd_bond_view *restrict b, const int *restrict type, int trow, int ti,
                const double *restrict x, const double xi[3], int i, int row, int m,
                double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
-               pd_force_fn force, pd_may_break_fn may_break, pd_law_notes_fn notes, int weighted,
-               int failing, int tallied)
+               pd_force_fn force, pd_may_break_fn may_break, pd_law_notes_fn notes,
+               int takes_notes, int weighted, int failing, int tallied)
 {
   /* (64 bits wide, as the tests' masks are: an int made AVX2 pack them;
    * each test negated, so that its mask (-1) is ORed in as it is, not
@@ -205,8 +220,9 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
     const pd_bond_force bf = force(mat, &bd, eps);
     if (failing) {
       special |= -(long long) may_break(fail, &bd, eps, &bf);
-      g[3 * PD_CHUNK + k] = notes(fail, &bd);    /* (whether or not the law notes: a
-                                                  * condition here stops the vectorizer) */
+      /* (whether or not this evaluation keeps them: a condition here
+       * stopped the vectorizer) */
+      if (takes_notes) g[3 * PD_CHUNK + k] = notes(fail, &bd);
     }
     for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = bf.tl * bd.d[c];
     if (tallied) {
@@ -216,6 +232,24 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
     }
   }
   return special != 0;
+}
+
+/* pd_force_bonds for a chunk in whole vectors (pd_vector_overlap). */
+PD_INLINE int
+pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int trow, int ti,
+               const double *restrict x, const double xi[3], int i, int row, int m,
+               double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
+               pd_force_fn force, pd_may_break_fn may_break, pd_law_notes_fn notes,
+               int takes_notes, int weighted, int failing, int tallied)
+{
+  const int last = pd_vector_overlap(m);
+  if (last < 0)
+    return pd_force_bonds(b, type, trow, ti, x, xi, i, row, m, g, fail, mat, strain, force,
+                          may_break, notes, takes_notes, weighted, failing, tallied);
+  return pd_force_bonds(b, type, trow, ti, x, xi, i, row, m - m % PD_VECTOR_BONDS, g, fail, mat,
+                        strain, force, may_break, notes, takes_notes, weighted, failing, tallied) ||
+         pd_force_bonds(b, type, trow, ti, x, xi, i, row + last, PD_VECTOR_BONDS, g + last, fail,
+                        mat, strain, force, may_break, notes, takes_notes, weighted, failing, tallied);
 }
 
 /* The first pass's numbers of bond k as one vector: its force (lanes 0-2)
@@ -288,8 +322,8 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
  * row in chunks: the vectorized first pass, then the scalar sums onto i
  * and its (distinct) far ends, the failure law's notes and the energy and
  * virial tallies, in the same order and with the same arithmetic as bond
- * by bond. The far ends' sums (reaction, nall atoms) are zeroed first and
- * added onto f last; the notes' maximum (their 4th lane, -inf where none)
+ * by bond. The far ends' sums (reaction, nall atoms, zero on entry) are
+ * added onto f last and zeroed as they are; the notes' maximum (their 4th lane, -inf where none)
  * then goes to pd_failure.note_atom. */
 PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
@@ -297,21 +331,19 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                  double *restrict reaction, int nall, pd_tally *tally, pd_failure *fail,
                  void *restrict mat, pd_strain_fn strain, pd_force_fn force,
                  pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-                 pd_may_break_fn may_break, pd_law_notes_fn notes, int weighted,
-                 int tallied, int failing, int directed)
+                 pd_may_break_fn may_break, pd_law_notes_fn notes, int takes_notes,
+                 int weighted, int tallied, int failing, int directed)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int chunked = !directed && !(tallied && tally->eatom);
   /* (a local: read through fail, it was loaded again after every
    * reaction store) */
-  double *restrict note_atom = failing ? fail->note_atom : NULL;
+  double *restrict note_atom = failing && takes_notes ? fail->note_atom : NULL;
   const int noting = note_atom != NULL;
-  /* the notes' maximum in the sums' 4th lane: one 4-wide update per bond */
+  /* the notes' maximum in the sums' 4th lane: one 4-wide update per bond
+   * (the sums come zero and leave zero: no pass of their own to clear them) */
   if (noting)
-    for (int a = 0; a < nall; a++)
-      pd_sum4_store(reaction + 4 * (ptrdiff_t) a, pd_sum4_make(0.0, 0.0, 0.0, -INFINITY));
-  else
-    memset(reaction, 0, sizeof(double) * 4 * (size_t) nall);
+    for (int a = 0; a < nall; a++) reaction[4 * (ptrdiff_t) a + 3] = -INFINITY;
   pd_bond bd;
   double g[7 * PD_CHUNK];
   for (int i = 0; i < b->nowner; i++) {
@@ -333,9 +365,9 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       /* (one copy of the first pass for one atom type: no type loads) */
       if (chunked &&
           !(type ? pd_force_chunk(b, type, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, may_break, notes, weighted, failing, tallied)
+                                  strain, force, may_break, notes, takes_notes, weighted, failing, tallied)
                  : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, may_break, notes, weighted, failing, tallied))) {
+                                  strain, force, may_break, notes, takes_notes, weighted, failing, tallied))) {
         /* (a copy per case: a test per bond cost the legacy law 9%) */
         if (noting)
           pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1);
@@ -365,6 +397,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
   for (int a = 0; a < nall; a++) {
     for (int c = 0; c < 3; c++) f[3 * a + c] += reaction[4 * a + c];
     if (noting) note_atom[a] = reaction[4 * a + 3];
+    for (int c = 0; c < 4; c++) reaction[4 * a + c] = 0.0;    /* (vectorized with the adds) */
   }
   if (failing) pd_add_break_sums(fail, &sums);
 }
@@ -372,12 +405,12 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
 PD_INLINE void
 pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn force,
               pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-              pd_may_break_fn may_break, pd_law_notes_fn notes, int weighted,
+              pd_may_break_fn may_break, pd_law_notes_fn notes, int takes_notes, int weighted,
               int tallied, int failing, int directed)
 {
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->reaction, L->nall, L->tally,
                    L->fail, mat, strain, force, breaks_now, breaks_after, may_break, notes,
-                   weighted, tallied, failing, directed);
+                   takes_notes, weighted, tallied, failing, directed);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */
@@ -388,7 +421,7 @@ typedef void (*pd_kernel)(const pd_loop *L, void *mat);
   {                                                                                       \
     pd_force_loop(L, mat, strain, force, pd_law_##law##_now, pd_law_##law##_after,        \
                   pd_law_##law##_ahead, pd_law_##law##_notes,                             \
-                  weighted, tallied, failing, directed);                                  \
+                  pd_law_##law##_takes_notes(), weighted, tallied, failing, directed);    \
   }
 #define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing, directed) \
   PD_KERNEL_(prefix, strain, force, law, failing, 0, 0, directed)             \
@@ -491,7 +524,7 @@ pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si,
   pd_scatter_sum(si, sum, width, t, bd->j, L->vol, L->vol[bd->i]);
 }
 
-/* Its first pass over bonds k0 .. k0+m-1 of a row, as pd_force_chunk: the
+/* Its first pass over bonds row .. row+m-1 of a row, as pd_force_bonds: the
  * values of every bond into tb (width per bond); nonzero if a bond is
  * broken (the caller then takes the chunk bond by bond). */
 PD_INLINE int
@@ -500,7 +533,7 @@ pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int
                      pd_bond_strain_value_fn value, int weighted, int failing)
 {
   const pd_bond_view *restrict b = L->b;
-  long long broken = 0;    /* (as pd_force_chunk's 'special') */
+  long long broken = 0;    /* (as pd_force_bonds' 'special') */
   for (int k = 0; k < m; k++) {
     pd_bond bd;
     bd.i = i;
@@ -511,27 +544,18 @@ pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int
   return broken != 0;
 }
 
-/* Bonds a first pass takes as one vector (AVX-512: 16, as two registers
- * of 8 doubles, their far ends' indices in one). */
-enum { PD_VECTOR_BONDS = 16 };
-
-/* pd_current_sum_bonds for a chunk in whole vectors: a chunk whose size is
- * not a multiple of PD_VECTOR_BONDS takes its whole vectors, then its last
- * PD_VECTOR_BONDS bonds once more as one (the overlap computed again, to
- * the same numbers); else its last bonds went one by one (a row of 61
- * bonds: 48 in vectors of 16, 8 in one of 8 and 5 alone; pd/ordinary
- * 1.03x, its m = 0 1.10x faster at 16^3). (The force pass gained 4% so on
- * elastic steps but nothing on steps with a failure law: not taken.) */
+/* pd_current_sum_bonds for a chunk in whole vectors (pd_vector_overlap:
+ * pd/ordinary 1.03x, its m = 0 1.10x faster at 16^3). */
 PD_INLINE int
 pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
                      double *restrict tb, void *mat, pd_strain_fn strain,
                      pd_bond_strain_value_fn value, int weighted, int failing)
 {
-  if (m <= PD_VECTOR_BONDS || m % PD_VECTOR_BONDS == 0)
+  const int last = pd_vector_overlap(m);
+  if (last < 0)
     return pd_current_sum_bonds(L, width, xi, i, row, m, tb, mat, strain, value, weighted, failing);
-  const int whole = m - m % PD_VECTOR_BONDS, last = m - PD_VECTOR_BONDS;
-  return pd_current_sum_bonds(L, width, xi, i, row, whole, tb, mat, strain, value, weighted,
-                              failing) ||
+  return pd_current_sum_bonds(L, width, xi, i, row, m - m % PD_VECTOR_BONDS, tb, mat, strain,
+                              value, weighted, failing) ||
          pd_current_sum_bonds(L, width, xi, i, row + last, PD_VECTOR_BONDS, tb + last * width,
                               mat, strain, value, weighted, failing);
 }

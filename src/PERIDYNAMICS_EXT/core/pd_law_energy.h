@@ -50,6 +50,8 @@ static inline int pd_law_energy_after(const pd_failure *f, const pd_bond *bd, do
   return 0;
 }
 
+static inline int pd_law_energy_takes_notes(void) { return 0; }
+
 static inline double pd_law_energy_notes(const pd_failure *f, const pd_bond *bd)
 {
   (void) f, (void) bd;

@@ -40,6 +40,8 @@ static inline int pd_law_legacy_ahead(const pd_failure *f, const pd_bond *bd, do
   return pd_bond_stretch(bd) > p->s0_floor;
 }
 
+static inline int pd_law_legacy_takes_notes(void) { return 1; }
+
 /* every intact bond that acted: the candidate s0 of both ends */
 static inline double pd_law_legacy_notes(const pd_failure *f, const pd_bond *bd)
 {

@@ -25,6 +25,8 @@ static inline int pd_law_none_ahead(const pd_failure *f, const pd_bond *bd, doub
   return 0;
 }
 
+static inline int pd_law_none_takes_notes(void) { return 0; }
+
 static inline double pd_law_none_notes(const pd_failure *f, const pd_bond *bd)
 {
   (void) f, (void) bd;

@@ -41,6 +41,8 @@ static inline int pd_law_stretch_ahead(const pd_failure *f, const pd_bond *bd, d
   return bd->len - bd->r0 > p->s0[bd->tij] * (1.0 - 1e-12) * bd->r0;
 }
 
+static inline int pd_law_stretch_takes_notes(void) { return 0; }
+
 static inline double pd_law_stretch_notes(const pd_failure *f, const pd_bond *bd)
 {
   (void) f, (void) bd;

@@ -18,6 +18,8 @@
  *                       combine by their maximum, in any order. An
  *                       evaluation whose law needs no notes gives no
  *                       array (note_atom NULL): the loop keeps none then.
+ *   pd_law_<name>_takes_notes  1 if the law ever notes: kernels of a law
+ *                       that does not (0) neither ask _notes nor keep notes.
  * _now, _after, _ahead and _notes only answer (no side effects): the loop
  * asks _ahead and _notes for a row's bonds ahead of their turn, in its
  * vectorized pass, and _now, _after and _notes again bond by bond.
@@ -26,7 +28,7 @@
 #ifndef PD_LAWS_H
 #define PD_LAWS_H
 
-/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_ahead/_notes. */
+/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_ahead/_notes/_takes_notes. */
 #define PD_FAILURE_LAWS(X, ...)          \
   X(NONE, none, __VA_ARGS__)             \
   X(STRETCH, stretch, __VA_ARGS__)       \

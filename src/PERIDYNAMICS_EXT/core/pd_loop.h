@@ -15,8 +15,9 @@ typedef struct pd_loop {
   pd_tally *tally;         /* energy and virial, or NULL */
   pd_failure *fail;        /* NULL: no bond is or can be broken */
   /* the force loop's scratch for its sums onto far ends: 4 doubles per
-   * atom (the 4th is padding), owned + ghost, any content (pd_bond_loop.h);
-   * NULL where no force is computed */
+   * atom (the 4th for the failure law's notes), owned + ghost, all zero
+   * on entry and left all zero (pd_bond_loop.h); NULL where no force is
+   * computed */
   double *reaction;
   int nall;                /* owned + ghost atoms */
 } pd_loop;
