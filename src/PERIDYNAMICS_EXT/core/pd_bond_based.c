@@ -86,7 +86,7 @@ static inline pd_bond_force microplastic_force(void *ctx, const pd_bond *bd, dou
   return pmb_bond(c, s - *sp, (s - *sp) * (bd->r0 * pd_bond_inverse(bd)), bd);
 }
 
-PD_DEFINE_KERNELS(microplastic, pmb_strain, microplastic_force)
+PD_DEFINE_STATEFUL_KERNELS(microplastic, pmb_strain, microplastic_force)
 
 void pd_microplastic_forces(const pd_loop *L, const pd_pmb *mat, pd_microplastic *mp)
 {

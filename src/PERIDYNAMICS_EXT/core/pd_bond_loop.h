@@ -48,6 +48,12 @@ typedef int (*pd_may_break_fn)(const pd_failure *f, const pd_bond *bd, double ep
                                const pd_bond_force *bf);
 typedef double (*pd_law_notes_fn)(const pd_failure *f, const pd_bond *bd);
 
+/* What a material's force hook is: its force along the bond (plain), not
+ * along it (directed: pd_bond_force.v), or along it with a state that the
+ * hook updates (stateful: a second call for the same bond would see the
+ * first one's update, so no first pass computes a bond twice). */
+enum { PD_MATERIAL_PLAIN, PD_MATERIAL_DIRECTED, PD_MATERIAL_STATEFUL };
+
 /* How a loop takes each bond's weight: 1, the table, or weight_horizon
  * times 1/|xi| (pd_bond_view). */
 enum { PD_WEIGHT_ONE, PD_WEIGHT_TABLE, PD_WEIGHT_INVERSE };
@@ -234,15 +240,16 @@ pd_force_bonds(const pd_bond_view *restrict b, const int *restrict type, int tro
   return special != 0;
 }
 
-/* pd_force_bonds for a chunk in whole vectors (pd_vector_overlap). */
+/* pd_force_bonds for a chunk in whole vectors (pd_vector_overlap) when
+ * 'repeatable' (the material's hook may compute a bond twice). */
 PD_INLINE int
 pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int trow, int ti,
                const double *restrict x, const double xi[3], int i, int row, int m,
                double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                pd_force_fn force, pd_may_break_fn may_break, pd_law_notes_fn notes,
-               int takes_notes, int weighted, int failing, int tallied)
+               int takes_notes, int weighted, int failing, int tallied, int repeatable)
 {
-  const int last = pd_vector_overlap(m);
+  const int last = repeatable ? pd_vector_overlap(m) : -1;
   if (last < 0)
     return pd_force_bonds(b, type, trow, ti, x, xi, i, row, m, g, fail, mat, strain, force,
                           may_break, notes, takes_notes, weighted, failing, tallied);
@@ -323,8 +330,8 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
  * and its (distinct) far ends, the failure law's notes and the energy and
  * virial tallies, in the same order and with the same arithmetic as bond
  * by bond. The far ends' sums (reaction, nall atoms, zero on entry) are
- * added onto f last and zeroed as they are; the notes' maximum (their 4th lane, -inf where none)
- * then goes to pd_failure.note_atom. */
+ * added onto f last and zeroed as they are; the notes' maximum (their 4th
+ * lane, -inf where none) then goes to pd_failure.note_atom. */
 PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
                  const double *restrict x, const double *restrict vol, double *restrict f,
@@ -332,9 +339,10 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                  void *restrict mat, pd_strain_fn strain, pd_force_fn force,
                  pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
                  pd_may_break_fn may_break, pd_law_notes_fn notes, int takes_notes,
-                 int weighted, int tallied, int failing, int directed)
+                 int weighted, int tallied, int failing, int kind)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
+  const int directed = kind == PD_MATERIAL_DIRECTED, repeatable = kind == PD_MATERIAL_PLAIN;
   const int chunked = !directed && !(tallied && tally->eatom);
   /* (a local: read through fail, it was loaded again after every
    * reaction store) */
@@ -365,9 +373,11 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       /* (one copy of the first pass for one atom type: no type loads) */
       if (chunked &&
           !(type ? pd_force_chunk(b, type, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, may_break, notes, takes_notes, weighted, failing, tallied)
+                                  strain, force, may_break, notes, takes_notes, weighted, failing, tallied,
+                                  repeatable)
                  : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, may_break, notes, takes_notes, weighted, failing, tallied))) {
+                                  strain, force, may_break, notes, takes_notes, weighted, failing, tallied,
+                                  repeatable))) {
         /* (a copy per case: a test per bond cost the legacy law 9%) */
         if (noting)
           pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1);
@@ -406,51 +416,56 @@ PD_INLINE void
 pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn force,
               pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
               pd_may_break_fn may_break, pd_law_notes_fn notes, int takes_notes, int weighted,
-              int tallied, int failing, int directed)
+              int tallied, int failing, int kind)
 {
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->reaction, L->nall, L->tally,
                    L->fail, mat, strain, force, breaks_now, breaks_after, may_break, notes,
-                   takes_notes, weighted, tallied, failing, directed);
+                   takes_notes, weighted, tallied, failing, kind);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */
 typedef void (*pd_kernel)(const pd_loop *L, void *mat);
 
-#define PD_KERNEL_(prefix, strain, force, law, failing, weighted, tallied, directed)     \
+#define PD_KERNEL_(prefix, strain, force, law, failing, weighted, tallied, kind)         \
   static void prefix##_##law##_##failing##weighted##tallied(const pd_loop *L, void *mat) \
   {                                                                                       \
     pd_force_loop(L, mat, strain, force, pd_law_##law##_now, pd_law_##law##_after,        \
                   pd_law_##law##_ahead, pd_law_##law##_notes,                             \
-                  pd_law_##law##_takes_notes(), weighted, tallied, failing, directed);    \
+                  pd_law_##law##_takes_notes(), weighted, tallied, failing, kind);        \
   }
-#define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing, directed) \
-  PD_KERNEL_(prefix, strain, force, law, failing, 0, 0, directed)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 0, 1, directed)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 1, 0, directed)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 1, 1, directed)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 2, 0, directed)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 2, 1, directed)
+#define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing, kind) \
+  PD_KERNEL_(prefix, strain, force, law, failing, 0, 0, kind)             \
+  PD_KERNEL_(prefix, strain, force, law, failing, 0, 1, kind)             \
+  PD_KERNEL_(prefix, strain, force, law, failing, 1, 0, kind)             \
+  PD_KERNEL_(prefix, strain, force, law, failing, 1, 1, kind)             \
+  PD_KERNEL_(prefix, strain, force, law, failing, 2, 0, kind)             \
+  PD_KERNEL_(prefix, strain, force, law, failing, 2, 1, kind)
 #define PD_KERNEL_ROW_(ID, law, prefix, failing)                                      \
   {prefix##_##law##_##failing##00, prefix##_##law##_##failing##01,                    \
    prefix##_##law##_##failing##10, prefix##_##law##_##failing##11,                    \
    prefix##_##law##_##failing##20, prefix##_##law##_##failing##21},
-#define PD_FAILING_KERNELS_(ID, law, prefix, strain, force, directed) \
-  PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, 1, directed)
+#define PD_FAILING_KERNELS_(ID, law, prefix, strain, force, kind) \
+  PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, 1, kind)
 #define PD_FAILING_ROW_(ID, law, prefix) PD_KERNEL_ROW_(ID, law, prefix, 1)
 
 /* Defines prefix_kernels: row 0 for intact bonds only (nothing can be or
  * become broken), then one row per failure law of pd_laws.h; in each row
  * the six combinations of weight mode (PD_WEIGHT_*) and tally. */
-#define PD_DEFINE_KERNELS_(prefix, strain, force, directed)                           \
-  PD_KERNELS_OF_LAW_(NONE, none, prefix, strain, force, 0, directed)                  \
-  PD_FAILURE_LAWS(PD_FAILING_KERNELS_, prefix, strain, force, directed)               \
+#define PD_DEFINE_KERNELS_(prefix, strain, force, kind)                               \
+  PD_KERNELS_OF_LAW_(NONE, none, prefix, strain, force, 0, kind)                      \
+  PD_FAILURE_LAWS(PD_FAILING_KERNELS_, prefix, strain, force, kind)                   \
   static const pd_kernel prefix##_kernels[PD_NLAWS + 1][6] = {                       \
       PD_KERNEL_ROW_(NONE, none, prefix, 0) PD_FAILURE_LAWS(PD_FAILING_ROW_, prefix)};
-#define PD_DEFINE_KERNELS(prefix, strain, force) PD_DEFINE_KERNELS_(prefix, strain, force, 0)
+#define PD_DEFINE_KERNELS(prefix, strain, force) \
+  PD_DEFINE_KERNELS_(prefix, strain, force, PD_MATERIAL_PLAIN)
 /* The same for a material whose bond force is not along the bond (its
  * force hook fills pd_bond_force.v): the classical correspondence. */
 #define PD_DEFINE_DIRECTED_KERNELS(prefix, strain, force) \
-  PD_DEFINE_KERNELS_(prefix, strain, force, 1)
+  PD_DEFINE_KERNELS_(prefix, strain, force, PD_MATERIAL_DIRECTED)
+/* The same for a material whose force hook updates a state of the bond
+ * (microplastic's plastic stretch). */
+#define PD_DEFINE_STATEFUL_KERNELS(prefix, strain, force) \
+  PD_DEFINE_KERNELS_(prefix, strain, force, PD_MATERIAL_STATEFUL)
 
 /* Run the kernel of a table that L asks for: its failure law (or none),
  * the bond view's weight mode, tally when L has one. */
