@@ -28,7 +28,8 @@
 #ifndef PD_LAWS_H
 #define PD_LAWS_H
 
-/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_ahead/_notes/_takes_notes. */
+/* X(ID, name): PD_FAIL_<ID> in pd_fail_law; hooks pd_law_<name>_now/_after/_ahead/_notes
+ * and _takes_notes. */
 #define PD_FAILURE_LAWS(X, ...)          \
   X(NONE, none, __VA_ARGS__)             \
   X(STRETCH, stretch, __VA_ARGS__)       \
