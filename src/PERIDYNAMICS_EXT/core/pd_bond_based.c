@@ -22,7 +22,7 @@ const pd_coef pd_bond_coefs[PD_BOND_NCOEFS] = {
                        .flags = PD_COEF_PAIR | PD_COEF_FILE, .check = PD_CHECK_FINITE},
 };
 
-static inline double pmb_strain(void *mat, const pd_bond *bd)
+PD_INLINE double pmb_strain(void *mat, const pd_bond *bd)
 {
   (void) mat;
   return pd_bond_stretch(bd);
@@ -30,7 +30,7 @@ static inline double pmb_strain(void *mat, const pd_bond *bd)
 
 /* force c s w, given also as s / |Y| (sl); energy 1/4 c s^2 |xi| w per
  * partner volume at each end, released whole when the bond breaks */
-static inline pd_bond_force pmb_bond(double c, double s, double sl, const pd_bond *bd)
+PD_INLINE pd_bond_force pmb_bond(double c, double s, double sl, const pd_bond *bd)
 {
   const double t = c * s * bd->w;
   const double e = 0.25 * t * s * bd->r0;
@@ -41,7 +41,7 @@ static inline pd_bond_force pmb_bond(double c, double s, double sl, const pd_bon
 
 /* mat: the micromodulus table itself (one load less per bond than
  * through the pd_pmb) */
-static inline pd_bond_force pmb_force(void *c, const pd_bond *bd, double s)
+PD_INLINE pd_bond_force pmb_force(void *c, const pd_bond *bd, double s)
 {
   /* s / |Y| = (|Y| - |xi|) q: no divide but the stretch's (an elastic
    * evaluation needs s itself only for energies) */
@@ -64,7 +64,7 @@ typedef struct plastic_ctx {
 
 /* return map: the elastic stretch s - sp stays within [-sy, sy]; the
  * plastic work 1/2 c sy |d sp| |xi| w per partner volume at each end */
-static inline pd_bond_force microplastic_force(void *ctx, const pd_bond *bd, double s)
+PD_INLINE pd_bond_force microplastic_force(void *ctx, const pd_bond *bd, double s)
 {
   const plastic_ctx *p = (const plastic_ctx *) ctx;
   pd_microplastic *mp = p->mp;
@@ -95,7 +95,7 @@ void pd_microplastic_forces(const pd_loop *L, const pd_pmb *mat, pd_microplastic
 }
 
 /* |C| = c w / |xi| at both ends (MS07 eq. 41) */
-static inline void pmb_stiffness(const void *mat, const pd_bond *bd, double *a, double *b)
+PD_INLINE void pmb_stiffness(const void *mat, const pd_bond *bd, double *a, double *b)
 {
   const pd_pmb *m = (const pd_pmb *) mat;
   *a = *b = m->c[bd->tij] * bd->w / bd->r0;

@@ -188,33 +188,33 @@ extended_force(const pd_corr_state *st, const pd_bond *bd, double eps, int kind,
 
 /* ---- hooks and kernels: classical, extended (log, any m) x damage ------- */
 
-static inline double stretch(void *st, const pd_bond *bd)
+PD_INLINE double stretch(void *st, const pd_bond *bd)
 {
   (void) st;
   return (bd->len - bd->r0) / bd->r0;
 }
 /* (a kernel that needs no bond energy drops the strain's log: only the
  * energies and the failure laws read it) */
-static inline double strain_log(void *st, const pd_bond *bd)
+PD_INLINE double strain_log(void *st, const pd_bond *bd)
 {
   (void) st;
   return pd_bond_log_strain(bd, 0);
 }
-static inline double strain_any(void *st, const pd_bond *bd)
+PD_INLINE double strain_any(void *st, const pd_bond *bd)
 {
   return pd_bond_strain(PD_ORDER_ANY, ((const pd_corr_state *) st)->order, bd);
 }
 
 #define CORR_HOOKS(name, DAMAGED)                                                                  \
-  static inline pd_bond_force classical_##name(void *st, const pd_bond *bd, double eps)            \
+  PD_INLINE pd_bond_force classical_##name(void *st, const pd_bond *bd, double eps)            \
   {                                                                                                \
     return classical_force((const pd_corr_state *) st, bd, eps, DAMAGED);                          \
   }                                                                                                \
-  static inline pd_bond_force log_##name(void *st, const pd_bond *bd, double eps)                  \
+  PD_INLINE pd_bond_force log_##name(void *st, const pd_bond *bd, double eps)                  \
   {                                                                                                \
     return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_LOG, DAMAGED);             \
   }                                                                                                \
-  static inline pd_bond_force any_##name(void *st, const pd_bond *bd, double eps)                  \
+  PD_INLINE pd_bond_force any_##name(void *st, const pd_bond *bd, double eps)                  \
   {                                                                                                \
     return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_ANY, DAMAGED);             \
   }                                                                                                \

@@ -21,14 +21,14 @@ typedef struct pd_law_energy {
  * vectorizes; (crit_i + crit_far) G_c first: in the screen, a row's
  * constant (with pd_bond_force.release, pd/ordinary's energy law 1.26x ->
  * 1.18x the cycles of its elastic passes, llvm-mca's model of Zen 3). */
-static inline int pd_law_energy_reached(const pd_law_energy *p, const pd_bond *bd, double eps,
+PD_INLINE int pd_law_energy_reached(const pd_law_energy *p, const pd_bond *bd, double eps,
                                         const pd_bond_force *bf, double crit_far)
 {
   return (eps > 0.0) & (bf->release * bd->r0 * bd->r0 >=
                         bd->w * ((p->crit[bd->i] + crit_far) * p->gc[bd->tij]));
 }
 
-static inline int pd_law_energy_now(const pd_failure *f, const pd_bond *bd, double eps,
+PD_INLINE int pd_law_energy_now(const pd_failure *f, const pd_bond *bd, double eps,
                                     const pd_bond_force *bf)
 {
   const pd_law_energy *p = (const pd_law_energy *) f->params;
@@ -37,22 +37,22 @@ static inline int pd_law_energy_now(const pd_failure *f, const pd_bond *bd, doub
 
 /* with the far end's crit at its floor: no per-atom load but the owner's
  * (the same in a whole row) */
-static inline int pd_law_energy_ahead(const pd_failure *f, const pd_bond *bd, double eps,
+PD_INLINE int pd_law_energy_ahead(const pd_failure *f, const pd_bond *bd, double eps,
                                       const pd_bond_force *bf)
 {
   const pd_law_energy *p = (const pd_law_energy *) f->params;
   return pd_law_energy_reached(p, bd, eps, bf, p->crit_floor);
 }
 
-static inline int pd_law_energy_after(const pd_failure *f, const pd_bond *bd, double eps)
+PD_INLINE int pd_law_energy_after(const pd_failure *f, const pd_bond *bd, double eps)
 {
   (void) f, (void) bd, (void) eps;
   return 0;
 }
 
-static inline int pd_law_energy_takes_notes(void) { return 0; }
+PD_INLINE int pd_law_energy_takes_notes(void) { return 0; }
 
-static inline double pd_law_energy_notes(const pd_failure *f, const pd_bond *bd)
+PD_INLINE double pd_law_energy_notes(const pd_failure *f, const pd_bond *bd)
 {
   (void) f, (void) bd;
   return 0.0;

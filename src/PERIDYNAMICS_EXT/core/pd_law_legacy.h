@@ -15,14 +15,14 @@ typedef struct pd_law_legacy {
 /* Its notes (pd_failure.note_atom) are each atom's new s0: -inf where no
  * intact bond was seen. */
 
-static inline int pd_law_legacy_now(const pd_failure *f, const pd_bond *bd, double eps,
+PD_INLINE int pd_law_legacy_now(const pd_failure *f, const pd_bond *bd, double eps,
                                     const pd_bond_force *bf)
 {
   (void) f, (void) bd, (void) eps, (void) bf;
   return 0;
 }
 
-static inline int pd_law_legacy_after(const pd_failure *f, const pd_bond *bd, double eps)
+PD_INLINE int pd_law_legacy_after(const pd_failure *f, const pd_bond *bd, double eps)
 {
   (void) eps;
   const pd_law_legacy *p = (const pd_law_legacy *) f->params;
@@ -32,7 +32,7 @@ static inline int pd_law_legacy_after(const pd_failure *f, const pd_bond *bd, do
 }
 
 /* _after against the smallest s0 of all atoms: no per-atom load */
-static inline int pd_law_legacy_ahead(const pd_failure *f, const pd_bond *bd, double eps,
+PD_INLINE int pd_law_legacy_ahead(const pd_failure *f, const pd_bond *bd, double eps,
                                       const pd_bond_force *bf)
 {
   (void) eps, (void) bf;
@@ -40,10 +40,10 @@ static inline int pd_law_legacy_ahead(const pd_failure *f, const pd_bond *bd, do
   return pd_bond_stretch(bd) > p->s0_floor;
 }
 
-static inline int pd_law_legacy_takes_notes(void) { return 1; }
+PD_INLINE int pd_law_legacy_takes_notes(void) { return 1; }
 
 /* every intact bond that acted: the candidate s0 of both ends */
-static inline double pd_law_legacy_notes(const pd_failure *f, const pd_bond *bd)
+PD_INLINE double pd_law_legacy_notes(const pd_failure *f, const pd_bond *bd)
 {
   const pd_law_legacy *p = (const pd_law_legacy *) f->params;
   const int tij = bd->tij;

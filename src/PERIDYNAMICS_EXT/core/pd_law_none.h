@@ -5,29 +5,29 @@
 
 #include "pd_failure.h"
 
-static inline int pd_law_none_now(const pd_failure *f, const pd_bond *bd, double eps,
+PD_INLINE int pd_law_none_now(const pd_failure *f, const pd_bond *bd, double eps,
                                   const pd_bond_force *bf)
 {
   (void) f, (void) bd, (void) eps, (void) bf;
   return 0;
 }
 
-static inline int pd_law_none_after(const pd_failure *f, const pd_bond *bd, double eps)
+PD_INLINE int pd_law_none_after(const pd_failure *f, const pd_bond *bd, double eps)
 {
   (void) f, (void) bd, (void) eps;
   return 0;
 }
 
-static inline int pd_law_none_ahead(const pd_failure *f, const pd_bond *bd, double eps,
+PD_INLINE int pd_law_none_ahead(const pd_failure *f, const pd_bond *bd, double eps,
                                     const pd_bond_force *bf)
 {
   (void) f, (void) bd, (void) eps, (void) bf;
   return 0;
 }
 
-static inline int pd_law_none_takes_notes(void) { return 0; }
+PD_INLINE int pd_law_none_takes_notes(void) { return 0; }
 
-static inline double pd_law_none_notes(const pd_failure *f, const pd_bond *bd)
+PD_INLINE double pd_law_none_notes(const pd_failure *f, const pd_bond *bd)
 {
   (void) f, (void) bd;
   return 0.0;

@@ -12,7 +12,7 @@ typedef struct pd_law_stretch {
   int after;           /* the bond breaks after its force acted, not before */
 } pd_law_stretch;
 
-static inline int pd_law_stretch_now(const pd_failure *f, const pd_bond *bd, double eps,
+PD_INLINE int pd_law_stretch_now(const pd_failure *f, const pd_bond *bd, double eps,
                                      const pd_bond_force *bf)
 {
   (void) eps, (void) bf;
@@ -22,7 +22,7 @@ static inline int pd_law_stretch_now(const pd_failure *f, const pd_bond *bd, dou
 
 /* (a test per bond here costs nothing: only bonds that the screen below
  * lets through, and rows with broken bonds, come bond by bond) */
-static inline int pd_law_stretch_after(const pd_failure *f, const pd_bond *bd, double eps)
+PD_INLINE int pd_law_stretch_after(const pd_failure *f, const pd_bond *bd, double eps)
 {
   (void) eps;
   const pd_law_stretch *p = (const pd_law_stretch *) f->params;
@@ -33,7 +33,7 @@ static inline int pd_law_stretch_after(const pd_failure *f, const pd_bond *bd, d
  * _now or _after breaks passes (its stretch is within a few ulps of this quotient), and
  * an elastic step computes no stretch for it (pd/bond's cost of the law
  * on AVX2 1.24x -> 1.06-1.14x) */
-static inline int pd_law_stretch_ahead(const pd_failure *f, const pd_bond *bd, double eps,
+PD_INLINE int pd_law_stretch_ahead(const pd_failure *f, const pd_bond *bd, double eps,
                                        const pd_bond_force *bf)
 {
   (void) eps, (void) bf;
@@ -41,9 +41,9 @@ static inline int pd_law_stretch_ahead(const pd_failure *f, const pd_bond *bd, d
   return bd->len - bd->r0 > p->s0[bd->tij] * (1.0 - 1e-12) * bd->r0;
 }
 
-static inline int pd_law_stretch_takes_notes(void) { return 0; }
+PD_INLINE int pd_law_stretch_takes_notes(void) { return 0; }
 
-static inline double pd_law_stretch_notes(const pd_failure *f, const pd_bond *bd)
+PD_INLINE double pd_law_stretch_notes(const pd_failure *f, const pd_bond *bd)
 {
   (void) f, (void) bd;
   return 0.0;

@@ -46,11 +46,11 @@ ordinary_bond(int kind, int uniform_b, const pd_ordinary_state *st, const pd_bon
 
 /* The hooks of each strain order: strain computed, force. */
 #define ORDER_HOOKS(KIND, name)                                                           \
-  static inline double strain_##name(void *st, const pd_bond *bd)                         \
+  PD_INLINE double strain_##name(void *st, const pd_bond *bd)                         \
   {                                                                                       \
     return pd_bond_strain(KIND, ((const pd_ordinary_state *) st)->order, bd);                \
   }                                                                                       \
-  static inline pd_bond_force force_##name(void *st, const pd_bond *bd, double eps)       \
+  PD_INLINE pd_bond_force force_##name(void *st, const pd_bond *bd, double eps)       \
   {                                                                                       \
     return ordinary_bond(KIND, 0, (const pd_ordinary_state *) st, bd, eps);               \
   }
@@ -65,20 +65,20 @@ ORDER_HOOKS(PD_ORDER_ANY, any)
  * pointer would stop that). */
 int pd_ordinary_keeps_strain(double m) { return pd_order_kind(m) == PD_ORDER_ANY; }
 
-static inline double strain_any_stored(void *st, const pd_bond *bd)
+PD_INLINE double strain_any_stored(void *st, const pd_bond *bd)
 {
   const pd_ordinary_state *s = (const pd_ordinary_state *) st;
   return s->strain[bd->idx] = pd_bond_strain(PD_ORDER_ANY, s->order, bd);
 }
 
-static inline double strain_cached(void *st, const pd_bond *bd)
+PD_INLINE double strain_cached(void *st, const pd_bond *bd)
 {
   return ((const pd_ordinary_state *) st)->strain[bd->idx];
 }
 
 /* m = 1/2 with one B for all atoms: one gather less per bond (1.07x at
  * 32^3, 1.1x at 64^3) */
-static inline pd_bond_force force_half_uniform(void *st, const pd_bond *bd, double eps)
+PD_INLINE pd_bond_force force_half_uniform(void *st, const pd_bond *bd, double eps)
 {
   return ordinary_bond(PD_ORDER_HALF, 1, (const pd_ordinary_state *) st, bd, eps);
 }
@@ -99,7 +99,7 @@ void pd_ordinary_forces(const pd_loop *L, const pd_ordinary_state *st)
   pd_run_kernel(table, L, (void *) st);
 }
 
-static inline void weighted_strain(void *st, const pd_bond *bd, double eps, double *t)
+PD_INLINE void weighted_strain(void *st, const pd_bond *bd, double eps, double *t)
 {
   (void) st;
   *t = bd->w * eps;
@@ -123,7 +123,7 @@ void pd_ordinary_dilatation(const pd_loop *L, const pd_ordinary_state *st)
   }
 }
 
-static inline void bond_stiffness(const void *k, const pd_bond *bd, double *a, double *b)
+PD_INLINE void bond_stiffness(const void *k, const pd_bond *bd, double *a, double *b)
 {
   const double *kc = (const double *) k;
   *a = *b = (kc[bd->i] + kc[bd->j]) * bd->w / (bd->r0 * bd->r0);
