@@ -206,15 +206,15 @@ PD_INLINE double strain_any(void *st, const pd_bond *bd)
 }
 
 #define CORR_HOOKS(name, DAMAGED)                                                                  \
-  PD_INLINE pd_bond_force classical_##name(void *st, const pd_bond *bd, double eps)            \
+  PD_INLINE pd_bond_force classical_##name(void *st, const pd_bond *bd, double eps)                \
   {                                                                                                \
     return classical_force((const pd_corr_state *) st, bd, eps, DAMAGED);                          \
   }                                                                                                \
-  PD_INLINE pd_bond_force log_##name(void *st, const pd_bond *bd, double eps)                  \
+  PD_INLINE pd_bond_force log_##name(void *st, const pd_bond *bd, double eps)                      \
   {                                                                                                \
     return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_LOG, DAMAGED);             \
   }                                                                                                \
-  PD_INLINE pd_bond_force any_##name(void *st, const pd_bond *bd, double eps)                  \
+  PD_INLINE pd_bond_force any_##name(void *st, const pd_bond *bd, double eps)                      \
   {                                                                                                \
     return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_ANY, DAMAGED);             \
   }                                                                                                \

@@ -46,11 +46,11 @@ ordinary_bond(int kind, int uniform_b, const pd_ordinary_state *st, const pd_bon
 
 /* The hooks of each strain order: strain computed, force. */
 #define ORDER_HOOKS(KIND, name)                                                           \
-  PD_INLINE double strain_##name(void *st, const pd_bond *bd)                         \
+  PD_INLINE double strain_##name(void *st, const pd_bond *bd)                             \
   {                                                                                       \
     return pd_bond_strain(KIND, ((const pd_ordinary_state *) st)->order, bd);                \
   }                                                                                       \
-  PD_INLINE pd_bond_force force_##name(void *st, const pd_bond *bd, double eps)       \
+  PD_INLINE pd_bond_force force_##name(void *st, const pd_bond *bd, double eps)           \
   {                                                                                       \
     return ordinary_bond(KIND, 0, (const pd_ordinary_state *) st, bd, eps);               \
   }
