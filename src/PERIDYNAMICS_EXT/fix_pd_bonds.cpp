@@ -89,12 +89,20 @@ FixPDBonds::~FixPDBonds()
 
 int FixPDBonds::setmask()
 {
-  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | POST_RUN | END_OF_STEP;
+  return PRE_EXCHANGE | POST_NEIGHBOR | MIN_POST_NEIGHBOR | POST_RUN | END_OF_STEP;
+}
+
+// The atoms are about to change ranks and indices: the pair style settles
+// what it keeps by index (PERI's rule, guarded: the s0 it deferred).
+void FixPDBonds::pre_exchange()
+{
+  if (PDFamilySource *source = serving ? pd_family_source(force) : nullptr) source->catch_up(false);
 }
 
 // Lost partners are counted all along; say so once per run when there are new ones.
 void FixPDBonds::post_run()
 {
+  if (PDFamilySource *source = serving ? pd_family_source(force) : nullptr) source->catch_up(true);
   const bigint total = (bigint) compute_scalar();
   if (total > nlost_reported && comm->me == 0)
     error->warning(FLERR, "Fix pd/bonds: {} intact bonds lost so far (an end moved beyond the "

@@ -36,6 +36,7 @@ class FixPDBonds : public Fix {
   void setup_post_neighbor() override;
   void post_neighbor() override;
   void min_post_neighbor() override { post_neighbor(); }
+  void pre_exchange() override;
   void post_run() override;
   void setup(int) override;
   void end_of_step() override;

@@ -804,6 +804,25 @@ void PairPD::begin_pass(Evaluation &e)
          e.fails ? &e.fail : nullptr, nullptr, 0};
 }
 
+void PairPD::force_pass(Evaluation &e, const std::function<void(const pd_loop *)> &pass)
+{
+  pass(&e.L);
+  if (!e.fails || !law->again(e.fail)) return;
+  e.fail.params = law->evaluation();
+  e.fail.law = law->kernels();
+  e.fail.note_atom = law->notes();
+  pd_loop L = e.L;
+  unused_forces.assign(3 * (size_t) L.nall, 0.0);
+  L.f = unused_forces.data();
+  L.tally = nullptr;
+  pass(&L);
+}
+
+void PairPD::catch_up(bool run_ends)
+{
+  if (law) law->catch_up(run_ends);
+}
+
 bool PairPD::end_evaluation(Evaluation &e)
 {
   const bool broke = e.fails && account_failure(e.fail);

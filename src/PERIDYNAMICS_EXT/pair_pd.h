@@ -12,6 +12,7 @@
 #include "pd_field.h"
 #include "pd_family_spec.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -73,6 +74,7 @@ class PairPD : public Pair, public PDFamilySource {
   virtual const char *style_name() const = 0;
   // the bond families this style asks the bond store for (PDFamilySource)
   PDFamilySpec family_spec() const override;
+  void catch_up(bool run_ends) override;    // the failure law's deferred per-atom state
   // the pd/ material style of the current pair style (alone or a hybrid
   // sub-style, found by type), or null
   static PairPD *active(class Force *);
@@ -241,6 +243,10 @@ class PairPD : public Pair, public PDFamilySource {
   // bonds, and which broken bonds push
   void begin_pass(Evaluation &e);
   bool end_evaluation(Evaluation &e);
+  // the material's force pass over e.L; again when the failure law asks
+  // (PDFailureLaw::again), adding no force then
+  void force_pass(Evaluation &e, const std::function<void(const pd_loop *)> &pass);
+  std::vector<double> unused_forces;    // the forces of such a second pass
   void report_cost(const pd_bond_view &v, double seconds);
   bool failing() const;
   pd_failure failure_state();

@@ -120,7 +120,7 @@ void PairPDBond::compute(int eflag, int vflag)
     book_released();
   } else {
     begin_evaluation(e);
-    pd_pmb_forces(&e.L, &mat);
+    force_pass(e, [&](const pd_loop *L) { pd_pmb_forces(L, &mat); });
   }
   end_evaluation(e);
   pvector[0] = bonds->fracture().local_dissipated();    // compute pair sums it over ranks

@@ -232,7 +232,7 @@ void PairPDOrdinary::compute(int eflag, int vflag)
     }
   }
   bonds->forward(field_id[F_AB]);
-  pd_ordinary_forces(&e.L, &st);
+  force_pass(e, [&](const pd_loop *L) { pd_ordinary_forces(L, &st); });
   end_evaluation(e);
 }
 

@@ -28,6 +28,8 @@ extern "C" {
 #include "pd_laws.h"
 }
 
+struct pd_failure;    // core/pd_failure.h
+
 namespace LAMMPS_NS {
 
 class FixPDBonds;
@@ -98,7 +100,15 @@ class PDFailureLaw : protected Pointers {
   // the row of core/pd_laws.h whose kernels run that evaluation: its own,
   // or another law's that makes the same test then
   virtual pd_fail_law kernels() const { return id; }
+  // after the material's force pass (all ranks): true when the pass must
+  // run again with what evaluation(), notes() and kernels() give now,
+  // adding no force, only the law's breaks and notes (PERI's rule, guarded)
+  virtual bool again(const pd_failure &) { return false; }
   virtual void after_evaluation() {}                   // what follows it (all ranks)
+  // per-atom state that evaluations deferred, made exact while the atoms'
+  // indices still hold: before they migrate, and when a run ends ('run_ends':
+  // then also a line on what the run deferred) (all ranks)
+  virtual void catch_up(bool /*run_ends*/) {}
   virtual void report() const {}                       // its line in the setup report (rank 0)
   // which lattice sum (core/pd_orientation.h, pd_release_kind) gives the
   // energy a crack releases through type t under this law, as a share of

@@ -10,9 +10,9 @@
 
 using namespace LAMMPS_NS;
 
-const PDFamilySource *LAMMPS_NS::pd_family_source(Force *force)
+PDFamilySource *LAMMPS_NS::pd_family_source(Force *force)
 {
   for (Pair *p : PDCompat::pair_styles(force))
-    if (auto *source = dynamic_cast<const PDFamilySource *>(p)) return source;
+    if (auto *source = dynamic_cast<PDFamilySource *>(p)) return source;
   return nullptr;
 }

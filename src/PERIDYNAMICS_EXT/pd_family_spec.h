@@ -82,6 +82,9 @@ class PDFamilySource {
  public:
   // the families this style asks for, as of its last init_style
   virtual PDFamilySpec family_spec() const = 0;
+  // per-atom state the style deferred, made exact while the atoms' indices
+  // still hold: before they migrate (pre_exchange), and when a run ends
+  virtual void catch_up(bool /*run_ends*/) {}
 
  protected:
   // Never deleted through this base (the style is deleted as a Pair), so no
@@ -94,7 +97,7 @@ class PDFamilySource {
 
 // The source among the current pair style and its hybrid sub-styles, or
 // null (pd_family_spec.cpp).
-const PDFamilySource *pd_family_source(class Force *force);
+PDFamilySource *pd_family_source(class Force *force);
 
 }    // namespace LAMMPS_NS
 

@@ -94,19 +94,29 @@ pd_bond_load(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict ty
   }
 }
 
+/* Atom i's row begins: bd's near end and its type (1 without types);
+ * returns the row's offset in the type-pair tables (trow). */
+PD_INLINE int pd_row_begin(pd_bond *bd, const int *restrict type, int ntypes, int i)
+{
+  bd->i = i;
+  bd->ti = type ? type[i] : 1;
+  return bd->ti * ntypes;
+}
+
 /* One bond of the force loop: decode (broken bonds, recontact), ask the
  * material and the failure law, add the force on i to fi and the reaction
  * on j to its sum (pd_loop.reaction), tally; when 'noting', the law's note
- * onto j's sum (its 4th lane) and row_note. The arrays are parameters so
- * that 'restrict' holds (GCC honours it on parameters): the force stores
- * then do not make it reload x or the material's tables. */
+ * onto row_note and, when 'ends' too, onto j's sum (its 4th lane). The
+ * arrays are parameters so that 'restrict' holds (GCC honours it on
+ * parameters): the force stores then do not make it reload x or the
+ * material's tables. */
 PD_INLINE void
 pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow,
               const double *restrict x, const double xi[3], const double *restrict vol,
               double *restrict reaction, pd_sum4 *fi, pd_bond *bd, int idx, pd_break_sums *sums,
               pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-              pd_law_notes_fn notes, double *row_note, int noting, int weighted,
+              pd_law_notes_fn notes, double *row_note, int noting, int ends, int weighted,
               int tallied, int failing, int directed)
 {
   pd_bond_load(bd, b, type, trow, x, xi, fail, idx, weighted, failing, 1);
@@ -150,7 +160,7 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   if (failing && !bd->broken) {
     if (noting) {
       const double value = notes(fail, bd);
-      pd_note_max(reaction + 4 * (ptrdiff_t) j + 3, value);
+      if (ends) pd_note_max(reaction + 4 * (ptrdiff_t) j + 3, value);
       pd_note_max(row_note, value);
     }
     if (breaks_after(fail, bd, eps))
@@ -265,32 +275,32 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
 }
 
 /* The first pass's numbers of bond k as one vector: its force (lanes 0-2)
- * and, when 'noting', its note (lane 3; else 0). */
-PD_INLINE pd_sum4 pd_chunk_record(const double *restrict g, int k, int noting)
+ * and, when 'ends', its note (lane 3; else 0). */
+PD_INLINE pd_sum4 pd_chunk_record(const double *restrict g, int k, int ends)
 {
   return pd_sum4_make(g[k], g[PD_CHUNK + k], g[2 * PD_CHUNK + k],
-                      noting ? g[3 * PD_CHUNK + k] : 0.0);
+                      ends ? g[3 * PD_CHUNK + k] : 0.0);
 }
 
 /* The same for bonds k .. k+3 at once: four loads and a transpose. */
-PD_INLINE void pd_chunk_records4(const double *restrict g, int k, int noting, pd_sum4 a[4])
+PD_INLINE void pd_chunk_records4(const double *restrict g, int k, int ends, pd_sum4 a[4])
 {
   const pd_sum4 zero = pd_sum4_make(0.0, 0.0, 0.0, 0.0);
   const pd_sum4 c[4] = {pd_sum4_load(g + k), pd_sum4_load(g + PD_CHUNK + k),
                         pd_sum4_load(g + 2 * PD_CHUNK + k),
-                        noting ? pd_sum4_load(g + 3 * PD_CHUNK + k) : zero};
+                        ends ? pd_sum4_load(g + 3 * PD_CHUNK + k) : zero};
   pd_sum4_transpose(c, a);
 }
 
 /* A chunk's second pass for one bond, its record a (pd_chunk_record) and
  * far end j: its force onto sum_i and its reaction onto the far end's sum;
- * when 'noting', its note onto the far end's sum (lane 3). */
+ * when 'ends', its note onto the far end's sum (lane 3). */
 PD_INLINE pd_sum4
 pd_scatter_bond(pd_sum4 sum_i, pd_sum4 a, int j, const double *restrict vol, double vi,
-                double *restrict reaction, int noting)
+                double *restrict reaction, int ends)
 {
   double *restrict rj = reaction + 4 * (ptrdiff_t) j;
-  if (noting)
+  if (ends)
     pd_sum4_store(rj, pd_sum4_axpy_note(pd_sum4_load(rj), -vi, a));
   else
     pd_sum4_store(rj, pd_sum4_axpy4(pd_sum4_load(rj), -vi, a));
@@ -299,11 +309,12 @@ pd_scatter_bond(pd_sum4 sum_i, pd_sum4 a, int j, const double *restrict vol, dou
 }
 
 /* A chunk's second pass: pd_scatter_bond for its m bonds, the even ones
- * onto fi[0] and the odd ones onto fi[1]; the largest note onto row_note. */
+ * onto fi[0] and the odd ones onto fi[1], their notes onto the far ends
+ * when 'ends'; when 'noting', the largest note onto row_note. */
 PD_INLINE void
 pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict g,
                  const double *restrict vol, double vi, double *restrict reaction,
-                 double *row_note, int m, int noting)
+                 double *row_note, int m, int noting, int ends)
 {
   const double *restrict note = g + 3 * PD_CHUNK;
   /* (fi's halves as locals: their memory would be loaded and stored again
@@ -314,14 +325,14 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
   int k = 0;
   for (; k + 3 < m; k += 4) {
     pd_sum4 a[4];
-    pd_chunk_records4(g, k, noting, a);
+    pd_chunk_records4(g, k, ends, a);
     if (noting) rn = pd_sum4_max(pd_sum4_load(note + k), rn);
     for (int c = 0; c < 4; c++)
-      sum[c & 1] = pd_scatter_bond(sum[c & 1], a[c], far[k + c], vol, vi, reaction, noting);
+      sum[c & 1] = pd_scatter_bond(sum[c & 1], a[c], far[k + c], vol, vi, reaction, ends);
   }
   for (; k < m; k++) {
-    sum[k & 1] = pd_scatter_bond(sum[k & 1], pd_chunk_record(g, k, noting), far[k], vol, vi,
-                                 reaction, noting);
+    sum[k & 1] = pd_scatter_bond(sum[k & 1], pd_chunk_record(g, k, ends), far[k], vol, vi,
+                                 reaction, ends);
     if (noting) pd_note_max(row_note, note[k]);
   }
   fi[0] = sum[0];
@@ -336,7 +347,8 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
  * virial tallies, in the same order and with the same arithmetic as bond
  * by bond. The far ends' sums (reaction, nall atoms, zero on entry) are
  * added onto f last and zeroed as they are; the notes' maximum (their 4th
- * lane, -inf where none) then goes to pd_failure.note_atom. */
+ * lane, -inf where none) then goes to pd_failure.note_atom, or for a law
+ * that keeps only the largest note, that one to pd_failure.note_largest. */
 PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
                  const double *restrict x, const double *restrict vol, double *restrict f,
@@ -351,11 +363,13 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
   const int chunked = !directed && !(tallied && tally->eatom);
   /* (a local: read through fail, it was loaded again after every
    * reaction store) */
-  double *restrict note_atom = failing && takes_notes ? fail->note_atom : NULL;
-  const int noting = note_atom != NULL;
+  double *restrict note_atom = failing && takes_notes == PD_NOTES_ENDS ? fail->note_atom : NULL;
+  const int ends = note_atom != NULL;
+  const int noting = ends || (failing && takes_notes == PD_NOTES_LARGEST);
+  double largest = -INFINITY;    /* PD_NOTES_LARGEST: the largest note */
   /* the notes' maximum in the sums' 4th lane: one 4-wide update per bond
    * (the sums come zero and leave zero: no pass of their own to clear them) */
-  if (noting)
+  if (ends)
     for (int a = 0; a < nall; a++) reaction[4 * (ptrdiff_t) a + 3] = -INFINITY;
   pd_bond bd;
   double g[7 * PD_CHUNK];
@@ -368,9 +382,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
      * two chains of adds instead of one (the scalar pass waited on it) */
     pd_sum4 fi[2];
     memset(fi, 0, sizeof fi);
-    bd.i = i;
-    bd.ti = type ? type[i] : 1;
-    const int trow = bd.ti * ntypes;
+    const int trow = pd_row_begin(&bd, type, ntypes, i);
     const double xi[3] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
     double row_note = -INFINITY;    /* the largest of the row's notes */
     for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
@@ -384,10 +396,12 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                                   strain, force, may_break, notes, takes_notes, weighted,
                                   failing, tallied, repeatable))) {
         /* (a copy per case: a test per bond cost the legacy law 9%) */
-        if (noting)
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1);
+        if (ends)
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 1);
+        else if (noting)
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 0);
         else
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0);
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0, 0);
         const int *restrict far = b->far + row + k0;
         /* as pd_force_bond tallies an intact bond, bond after bond (its
          * arithmetic written again here: through shared helpers this
@@ -404,17 +418,19 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       for (int k = 0; k < m; k++)
         pd_force_bond(b, type, trow, x, xi, vol, reaction, &fi[k & 1], &bd, row + k0 + k,
                       &sums, tally, fail, mat, strain, force, breaks_now, breaks_after, notes,
-                      &row_note, noting, weighted, tallied, failing, directed);
+                      &row_note, noting, ends, weighted, tallied, failing, directed);
     }
     for (int c = 0; c < 3; c++) f[3 * i + c] += pd_sum4_lane(fi[0], c) + pd_sum4_lane(fi[1], c);
-    if (noting) pd_note_max(reaction + 4 * (ptrdiff_t) i + 3, row_note);
+    if (ends) pd_note_max(reaction + 4 * (ptrdiff_t) i + 3, row_note);
+    else if (noting) pd_note_max(&largest, row_note);
   }
   for (int a = 0; a < nall; a++) {
     for (int c = 0; c < 3; c++) f[3 * a + c] += reaction[4 * a + c];
-    if (noting) note_atom[a] = reaction[4 * a + 3];
+    if (ends) note_atom[a] = reaction[4 * a + 3];
     for (int c = 0; c < 4; c++) reaction[4 * a + c] = 0.0;    /* (vectorized with the adds) */
   }
   if (failing) pd_add_break_sums(fail, &sums);
+  if (failing && takes_notes == PD_NOTES_LARGEST) fail->note_largest = largest;
 }
 
 PD_INLINE void
@@ -494,9 +510,7 @@ pd_reference_sums(const pd_bond_view *restrict b, const int *type, int ntypes,
   pd_bond bd;
   for (int i = 0; i < b->nowner; i++) {
     const int row = i * b->stride;
-    bd.i = i;
-    bd.ti = type ? type[i] : 1;
-    const int trow = bd.ti * ntypes;
+    const int trow = pd_row_begin(&bd, type, ntypes, i);
     for (int k = 0; k < b->count[i]; k++) {
       if (intact_only && pd_bond_broken(b->len0[row + k])) continue;
       pd_bond_load(&bd, b, type, trow, NULL, NULL, NULL, row + k, b->weight != NULL, 0, 0);

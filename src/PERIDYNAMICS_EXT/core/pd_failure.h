@@ -28,6 +28,9 @@ typedef struct pd_failure {
    * each intact bond that acted offers a value to both ends, which keep
    * the largest (-inf where none); NULL for a law that notes nothing */
   double *note_atom;
+  /* a law whose kernels keep only the largest note (PD_NOTES_LARGEST):
+   * the largest of the call, written by it (-inf where no bond noted) */
+  double note_largest;
   double released;        /* added by each call: sum of energy densities released */
   double released_joule;  /* the same in joules (volume-weighted) */
   long nbroken;           /* bonds broken by each call */

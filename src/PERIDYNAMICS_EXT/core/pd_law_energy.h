@@ -50,7 +50,7 @@ PD_INLINE int pd_law_energy_after(const pd_failure *f, const pd_bond *bd, double
   return 0;
 }
 
-PD_INLINE int pd_law_energy_takes_notes(void) { return 0; }
+PD_INLINE int pd_law_energy_takes_notes(void) { return PD_NOTES_NONE; }
 
 PD_INLINE double pd_law_energy_notes(const pd_failure *f, const pd_bond *bd)
 {

@@ -40,15 +40,65 @@ PD_INLINE int pd_law_legacy_ahead(const pd_failure *f, const pd_bond *bd, double
   return pd_bond_stretch(bd) > p->s0_floor;
 }
 
-PD_INLINE int pd_law_legacy_takes_notes(void) { return 1; }
+PD_INLINE int pd_law_legacy_takes_notes(void) { return PD_NOTES_ENDS; }
+
+/* A bond's candidate s0 at stretch s */
+PD_INLINE double pd_law_legacy_note_value(double s00, double alpha, double s)
+{
+  return s00 - alpha * s;
+}
 
 /* every intact bond that acted: the candidate s0 of both ends */
 PD_INLINE double pd_law_legacy_notes(const pd_failure *f, const pd_bond *bd)
 {
   const pd_law_legacy *p = (const pd_law_legacy *) f->params;
   const int tij = bd->tij;
-  const double s = pd_bond_stretch(bd);
-  return p->s00[tij] - p->alpha[tij] * s;
+  return pd_law_legacy_note_value(p->s00[tij], p->alpha[tij], pd_bond_stretch(bd));
+}
+
+/* pd_law_legacy_note_value compiled in the core (-ffp-contract=off), so
+ * that the LAMMPS side gets the kernels' number to the bit. */
+double pd_law_legacy_note_of(double s00, double alpha, double s);
+
+/* The notes of an evaluation at positions x (owned + ghost): note_atom
+ * (nall) gets each atom's largest pd_law_legacy_notes over its intact
+ * bonds, -inf where none, the numbers the kernels give there; type as
+ * pd_loop.type (NULL: one type), ntypes its row length. */
+void pd_law_legacy_notes_at(const pd_bond_view *b, const int *type, int ntypes, const double *x,
+                            const pd_law_legacy *p, double *note_atom, int nall);
+
+/* PERI's rule, guarded: an evaluation that skips the exact test and the
+ * notes when it can prove afterwards that no bond broke ('fail legacy' on
+ * the LAMMPS side decides). Its kernels break nothing and keep only the
+ * largest stretch of the evaluation (pd_failure.note_largest): if that is
+ * at most every atom's s0, no bond met PERI's test; else the evaluation
+ * is made again with the exact law, adding no forces. No parameters. */
+PD_INLINE int pd_law_legacy_guarded_now(const pd_failure *f, const pd_bond *bd, double eps,
+                                        const pd_bond_force *bf)
+{
+  (void) f, (void) bd, (void) eps, (void) bf;
+  return 0;
+}
+
+PD_INLINE int pd_law_legacy_guarded_after(const pd_failure *f, const pd_bond *bd, double eps)
+{
+  (void) f, (void) bd, (void) eps;
+  return 0;
+}
+
+PD_INLINE int pd_law_legacy_guarded_ahead(const pd_failure *f, const pd_bond *bd, double eps,
+                                          const pd_bond_force *bf)
+{
+  (void) f, (void) bd, (void) eps, (void) bf;
+  return 0;
+}
+
+PD_INLINE int pd_law_legacy_guarded_takes_notes(void) { return PD_NOTES_LARGEST; }
+
+PD_INLINE double pd_law_legacy_guarded_notes(const pd_failure *f, const pd_bond *bd)
+{
+  (void) f;
+  return pd_bond_stretch(bd);
 }
 
 #endif

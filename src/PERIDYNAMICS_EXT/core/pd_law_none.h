@@ -25,7 +25,7 @@ PD_INLINE int pd_law_none_ahead(const pd_failure *f, const pd_bond *bd, double e
   return 0;
 }
 
-PD_INLINE int pd_law_none_takes_notes(void) { return 0; }
+PD_INLINE int pd_law_none_takes_notes(void) { return PD_NOTES_NONE; }
 
 PD_INLINE double pd_law_none_notes(const pd_failure *f, const pd_bond *bd)
 {

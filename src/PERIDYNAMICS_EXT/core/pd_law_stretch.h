@@ -41,7 +41,7 @@ PD_INLINE int pd_law_stretch_ahead(const pd_failure *f, const pd_bond *bd, doubl
   return bd->len - bd->r0 > p->s0[bd->tij] * (1.0 - 1e-12) * bd->r0;
 }
 
-PD_INLINE int pd_law_stretch_takes_notes(void) { return 0; }
+PD_INLINE int pd_law_stretch_takes_notes(void) { return PD_NOTES_NONE; }
 
 PD_INLINE double pd_law_stretch_notes(const pd_failure *f, const pd_bond *bd)
 {

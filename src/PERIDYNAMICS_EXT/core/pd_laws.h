@@ -18,8 +18,11 @@
  *                       combine by their maximum, in any order. An
  *                       evaluation whose law needs no notes gives no
  *                       array (note_atom NULL): the loop keeps none then.
- *   pd_law_<name>_takes_notes  1 if the law ever notes: kernels of a law
- *                       that does not (0) neither ask _notes nor keep notes.
+ *   pd_law_<name>_takes_notes  what the law's kernels keep of the notes:
+ *                       PD_NOTES_NONE (they neither ask _notes nor keep
+ *                       any), PD_NOTES_ENDS (each atom's largest, above)
+ *                       or PD_NOTES_LARGEST (only the largest of the
+ *                       evaluation: pd_failure.note_largest, no array).
  * _now, _after, _ahead and _notes only answer (no side effects): the loop
  * asks _ahead and _notes for a row's bonds ahead of their turn, in its
  * vectorized pass, and _now, _after and _notes again bond by bond.
@@ -34,7 +37,11 @@
   X(NONE, none, __VA_ARGS__)             \
   X(STRETCH, stretch, __VA_ARGS__)       \
   X(ENERGY, energy, __VA_ARGS__)         \
-  X(LEGACY, legacy, __VA_ARGS__)
+  X(LEGACY, legacy, __VA_ARGS__)         \
+  X(LEGACY_GUARDED, legacy_guarded, __VA_ARGS__)
+
+/* pd_law_<name>_takes_notes */
+enum { PD_NOTES_NONE, PD_NOTES_ENDS, PD_NOTES_LARGEST };
 
 #define PD_LAW_ENUM(ID, name, ...) PD_FAIL_##ID,
 typedef enum pd_fail_law { PD_FAILURE_LAWS(PD_LAW_ENUM, ~) PD_NLAWS } pd_fail_law;
