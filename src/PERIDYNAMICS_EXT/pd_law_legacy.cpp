@@ -24,8 +24,9 @@
    exact before atoms migrate and at the end of each run (catch_up), and
    steps that write a restart file, setup and minimization are exact.
    After a failed guard the next evaluations are exact, twice as many
-   after each further failure (at most MAX_WAIT), so that a breaking run
-   pays for few second passes.
+   after each further failure (at most MAX_WAIT), and half as many again
+   once as many guards in a row held: a breaking run pays for few second
+   passes, and an elastic spell soon guards every step again.
 ------------------------------------------------------------------------- */
 
 #include "pd_failure_law.h"
@@ -107,7 +108,7 @@ class LawLegacy : public PDFailureLaw {
         guardable = guardable && mine && value(ALPHA, ti, tj) >= 0.0;
       }
     guarded = redo = false;
-    wait = 0;
+    wait = streak = 0;
     backoff = 1;
     nevaluations = nguarded = nagain = 0;
   }
@@ -169,7 +170,10 @@ class LawLegacy : public PDFailureLaw {
       s0_floor = lowest_note(all[0]);
       keep_positions();
       s0_exact = false;
-      backoff = 1;
+      if (++streak >= backoff) {    // as many guards held as the wait was long
+        backoff = std::max(1, backoff / 2);
+        streak = 0;
+      }
       return false;
     }
     if (!s0_exact) settle_s0(xprev);
@@ -178,6 +182,7 @@ class LawLegacy : public PDFailureLaw {
     nagain++;
     wait = backoff;
     backoff = std::min(2 * backoff, MAX_WAIT);
+    streak = 0;
     return true;
   }
 
@@ -221,6 +226,7 @@ class LawLegacy : public PDFailureLaw {
   int nxprev = 0, xprev_nall = 0;
   bigint xprev_builds = -1;    // ... and the neighbor build they belong to
   int wait = 0, backoff = 1;   // exact evaluations to come, and after the next failed guard
+  int streak = 0;              // guards held since backoff last changed
   bigint nevaluations = 0, nguarded = 0, nagain = 0;    // this run's, for its report
 
   bool every_s0_is_s00(int nall) const
