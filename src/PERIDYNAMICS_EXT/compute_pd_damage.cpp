@@ -16,6 +16,7 @@
 #include "pd_modify_lookup.h"
 #include "update.h"
 
+#include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -40,6 +41,17 @@ void ComputePDDamage::init()
   bonds = find_bond_store(lmp, "compute pd/damage");
 }
 
+// The intact sum and the reference add the same volumes in another order
+// once atoms are sorted or spread over processors, so an intact family reads
+// 1 - (1 +- 1e-15), which 'damage > 0' would take for a crack. One gone bond
+// weighs about 1 / (bonds per atom), many orders above ROUND_OFF. (A family
+// with no intact bond reads exactly 1: its intact sum is 0.)
+static double zero_if_round_off(double damage)
+{
+  static constexpr double ROUND_OFF = 1e-12;
+  return fabs(damage) < ROUND_OFF ? 0.0 : damage;
+}
+
 void ComputePDDamage::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
@@ -59,7 +71,7 @@ void ComputePDDamage::compute_peratom()
   const double *reference = weighted ? bonds->weighted_volume() : bonds->family_volume();
   for (int i = 0; i < atom->nlocal; i++) {
     const double all = reference[i];
-    damage[i] = (all > 0.0 && (atom->mask[i] & groupbit)) ? 1.0 - damage[i] / all : 0.0;
+    damage[i] = (all > 0.0 && (atom->mask[i] & groupbit)) ? zero_if_round_off(1.0 - damage[i] / all) : 0.0;
   }
 }
 

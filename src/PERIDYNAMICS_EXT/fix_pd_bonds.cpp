@@ -39,8 +39,8 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     maxpartner(1), nrows(0), nowned(0), npartner(nullptr), partner(nullptr), r0(nullptr), weight(nullptr),
     history(nullptr), far(nullptr), nlost_local(0), intact_at_map(-1), stored_total(0),
     nlost_reported(0), warned_images(0), family_key(0.0), record(lmp), stable_dt(0.0), comm_array(nullptr),
-    comm_width(1), comm_max(0), guard_step(INFINITY), damaged(0), damaged_example(0), idissipated(-1),
-    ifamily_volume(-1), iweighted_volume(-1), fields_from_file(false)
+    comm_width(1), comm_max(0), idissipated(-1), ifamily_volume(-1), iweighted_volume(-1),
+    fields_from_file(false), guard_step(INFINITY), damaged(0), damaged_example(0)
 {
   if (strcmp(id, "PD_BONDS") != 0)
     error->all(FLERR, "Fix pd/bonds is created by the pd/ pair styles (as PD_BONDS); do not define it by hand");
