@@ -6,7 +6,7 @@ line costs a call per bond and the kernel's vector code: pd/ordinary's m = 0
 strain, out of line as strain_log.constprop.2.isra.0, made make demo 1.5x
 slower and no other test noticed. In the objects that instantiate kernels,
 a local function is therefore a kernel instantiation (<material>_<law>_<three
-digits: weight mode, tally, notes>) or nothing: an out-of-line hook, or a
+digits: failing, weight mode, tally>) or nothing: an out-of-line hook, or a
 compiler clone (.isra, .constprop, .part), fails here."""
 import re
 import subprocess
