@@ -44,8 +44,9 @@ void ComputePDDamage::init()
 // The intact sum and the reference add the same volumes in another order
 // once atoms are sorted or spread over processors, so an intact family reads
 // 1 - (1 +- 1e-15), which 'damage > 0' would take for a crack. One gone bond
-// weighs about 1 / (bonds per atom), many orders above ROUND_OFF. (A family
-// with no intact bond reads exactly 1: its intact sum is 0.)
+// weighs about 1 / (bonds per atom) with whole cells, many orders above
+// ROUND_OFF (only a sliver of a partial cell, or a weight that vanishes at
+// the horizon, weighs less). A family with no intact bond reads exactly 1.
 static double zero_if_round_off(double damage)
 {
   static constexpr double ROUND_OFF = 1e-12;
