@@ -149,7 +149,7 @@ class LawLegacy : public PDFailureLaw {
       nguarded++;
       return nullptr;    // (the guarded kernels read no parameters)
     }
-    if (!s0_exact) settle_s0(xprev);
+    settle_s0();
     return exact_params();
   }
   double *notes() override { return fixed || guarded ? nullptr : s0_new; }
@@ -176,7 +176,7 @@ class LawLegacy : public PDFailureLaw {
       }
       return false;
     }
-    if (!s0_exact) settle_s0(xprev);
+    settle_s0();
     guarded = false;
     redo = true;
     nagain++;
@@ -199,7 +199,7 @@ class LawLegacy : public PDFailureLaw {
 
   void catch_up(bool run_ends) override
   {
-    if (!s0_exact) settle_s0(xprev);
+    settle_s0();
     if (!run_ends || nevaluations == 0) return;
     if (comm->me == 0)
       utils::logmesg(lmp, "{}: fail legacy: {} of {} evaluations guarded (no s0 notes), {} of them "
@@ -294,17 +294,18 @@ class LawLegacy : public PDFailureLaw {
     xprev_builds = neighbor->ncalls;
   }
 
-  // every atom's s0 of the last (guarded) evaluation, from its positions x,
-  // owned and ghost: what an exact evaluation would have noted
-  void settle_s0(const double *x)
+  // every atom's s0 of the last evaluation, when it was guarded: from its
+  // positions (xprev, owned and ghost), what an exact one would have noted
+  void settle_s0()
   {
+    if (s0_exact) return;
     if (xprev_nall != atom->nlocal + atom->nghost || xprev_builds != neighbor->ncalls)
       error->one(FLERR, "Pair {}: fail legacy: the atoms changed before the deferred s0 were "
                  "settled (internal error; please report it)", style());
     exact_params();
     const int *type = atom->ntypes == 1 ? nullptr : atom->type;
     const pd_bond_view v = bonds()->view();
-    pd_law_legacy_notes_at(&v, type, atom->ntypes + 1, x, &params, s0_new, xprev_nall);
+    pd_law_legacy_notes_at(&v, type, atom->ntypes + 1, xprev, &params, s0_new, xprev_nall);
     take_notes();
     bonds()->copy_to_ghosts(atom->s0);    // (the exact test reads the ghosts' s0)
   }

@@ -5,6 +5,7 @@
 #define PD_LAW_LEGACY_H
 
 #include "pd_failure.h"
+#include "pd_law_none.h"
 
 typedef struct pd_law_legacy {
   const double *s00;      /* per type pair */
@@ -15,12 +16,8 @@ typedef struct pd_law_legacy {
 /* Its notes (pd_failure.note_atom) are each atom's new s0: -inf where no
  * intact bond was seen. */
 
-PD_INLINE int pd_law_legacy_now(const pd_failure *f, const pd_bond *bd, double eps,
-                                    const pd_bond_force *bf)
-{
-  (void) f, (void) bd, (void) eps, (void) bf;
-  return 0;
-}
+/* (a bond breaks only after its force acted: nothing before) */
+#define pd_law_legacy_now pd_law_none_now
 
 PD_INLINE int pd_law_legacy_after(const pd_failure *f, const pd_bond *bd, double eps)
 {
@@ -73,25 +70,10 @@ void pd_law_legacy_notes_at(const pd_bond_view *b, const int *type, int ntypes, 
  * largest stretch of the evaluation (pd_failure.note_largest): if that is
  * at most every atom's s0, no bond met PERI's test; else the evaluation
  * is made again with the exact law, adding no forces. No parameters. */
-PD_INLINE int pd_law_legacy_guarded_now(const pd_failure *f, const pd_bond *bd, double eps,
-                                        const pd_bond_force *bf)
-{
-  (void) f, (void) bd, (void) eps, (void) bf;
-  return 0;
-}
-
-PD_INLINE int pd_law_legacy_guarded_after(const pd_failure *f, const pd_bond *bd, double eps)
-{
-  (void) f, (void) bd, (void) eps;
-  return 0;
-}
-
-PD_INLINE int pd_law_legacy_guarded_ahead(const pd_failure *f, const pd_bond *bd, double eps,
-                                          const pd_bond_force *bf)
-{
-  (void) f, (void) bd, (void) eps, (void) bf;
-  return 0;
-}
+/* (breaking nothing, its tests are those of no law) */
+#define pd_law_legacy_guarded_now pd_law_none_now
+#define pd_law_legacy_guarded_after pd_law_none_after
+#define pd_law_legacy_guarded_ahead pd_law_none_ahead
 
 PD_INLINE int pd_law_legacy_guarded_takes_notes(void) { return PD_NOTES_LARGEST; }
 
