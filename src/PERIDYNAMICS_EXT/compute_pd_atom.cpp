@@ -76,7 +76,7 @@ std::vector<PDField> ComputePDAtom::known_fields() const
   else
     all = FixPDBonds::own_fields();
   if (PairPD *pair = PairPD::active(force))
-    for (const PDField &f : pair->per_atom_fields()) {
+    for (const PDField &f : pair->fields_to_declare()) {
       bool listed = false;
       for (const PDField &g : all) listed = listed || g.name == f.name;
       if (!listed) all.push_back(f);

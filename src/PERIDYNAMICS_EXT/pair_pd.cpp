@@ -944,11 +944,25 @@ double PairPD::influence_at(int kind, int dim, const PDBondGeometry &g)
 
 // The style's per-atom fields, in the bond store (the same ones again at
 // each run: the store returns their ids).
+// The style's fields, then the calibration's (recomputed at each run's
+// set-up, so not in restart files), then the failure law's.
+std::vector<PDField> PairPD::fields_to_declare() const
+{
+  std::vector<PDField> all = per_atom_fields();
+  const int moved = PDField::MIGRATE | PDField::OUTPUT;
+  all.push_back({"family_share", 1, moved});
+  all.push_back({"calibrated_volume", 1, moved});
+  if (law)
+    for (const PDField &f : law->per_atom_fields()) all.push_back(f);
+  return all;
+}
+
 void PairPD::declare_fields()
 {
-  declared = per_atom_fields();
+  declared = fields_to_declare();
   field_id.clear();
   for (const PDField &f : declared) field_id.push_back(bonds->add_field(f));
+  calibrated_field = field_index("calibrated_volume");
 }
 
 int PairPD::field_index(const std::string &name) const
@@ -970,16 +984,6 @@ double PairPD::shared_value(int p, double none)
                  describe(decl[p]), i, coef[p][i][i], first, coef[p][first][first]);
   }
   return first ? coef[p][first][first] : none;
-}
-
-std::vector<double> PairPD::complete_family_volumes() const
-{
-  const int n = atom->ntypes + 1;
-  std::vector<double> mine(n, 0.0), all(n, 0.0);
-  for (int i = 0; i < atom->nlocal; i++)
-    mine[atom->type[i]] = MAX(mine[atom->type[i]], bonds->weighted_volume()[i]);
-  MPI_Allreduce(mine.data(), all.data(), n, MPI_DOUBLE, MPI_MAX, world);
-  return all;
 }
 
 void PairPD::grow_work()
@@ -1044,6 +1048,7 @@ void PairPD::max_to_owners(double *a)
 void PairPD::report_setup()
 {
   report_pending = 0;
+  calibrate_families();
   setup_run();
   law->setup_run();
   grow_work();

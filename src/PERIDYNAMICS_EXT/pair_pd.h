@@ -81,6 +81,14 @@ class PairPD : public Pair, public PDFamilySource {
   double legacy_spacing() const { return legacy ? lattice_spacing : 0.0; }
   double plate_thickness() const { return thickness; }
   int dimension() const { return dim(); }    // of the model: 2 or 3
+  // the weighted volume atom i is calibrated on (its own family's, or a
+  // complete one near a free surface: core/pd_calibration.h)
+  double calibrated_volume(int i) const;
+  double complete_volume(int t) const { return calibrated_reference[t]; }    // of type t's complete family
+  // a per-atom sum over each owned atom's reference family, calibrated in
+  // place as the weighted volume is; returns the type's complete-family
+  // value it blends with
+  std::vector<double> calibrate(double *q) const;
   // 'quadrature partial': each bond weighted by the share of its partner's
   // cell inside the horizon (core/pd_quadrature.h)
   bool partial_volumes() const { return quadrature == QUADRATURE_PARTIAL; }
@@ -108,6 +116,9 @@ class PairPD : public Pair, public PDFamilySource {
   // the per-atom fields the style keeps in the bond store (pd_field.h),
   // declared with it at init; compute pd/atom lists the OUTPUT ones
   virtual std::vector<PDField> per_atom_fields() const { return {}; }
+  // those, the calibration's and the failure law's: what the style
+  // declares to the bond store
+  std::vector<PDField> fields_to_declare() const;
   // E and nu of the bonds between two types, for a critical stretch from
   // G_c (MS07 eq. 28-29)
   virtual void fracture_elastic(int i, int j, double &E, double &nu) const = 0;
@@ -214,9 +225,20 @@ class PairPD : public Pair, public PDFamilySource {
   // material's strain order m): an ERROR if two types differ; 'none' when
   // the style has no type
   double shared_value(int p, double none);
-  // per type: the weighted volume of a complete family, the largest over
-  // the type's atoms (an interior atom's); 0 for a type without atoms
-  std::vector<double> complete_family_volumes() const;
+  // Each family calibrated on itself (core/pd_calibration.h,
+  // pair_pd_calibration.cpp): at each run's set-up, every atom's share of
+  // its own family's sums and its calibrated weighted volume (per-atom
+  // fields of the bond store, migrating with the atoms)
+  void calibrate_families();
+  // each type's median of q over the owned atoms that take selects (NaN: none)
+  std::vector<double> type_medians(const double *q, const std::function<bool(int)> &take) const;
+  // every atom's calibrated weighted volume is its type's complete one
+  bool calibration_uniform() const;
+  // the style normalizes every atom by its own family, surfaces included
+  virtual bool surface_corrected() const { return false; }
+  std::vector<double> calibrated_reference;    // per type: the complete family's weighted volume
+  std::vector<double> family_tolerance;        // per type: the interior families' tolerance (pd_calibration.h)
+  int calibrated_field = -1;                   // the bond store's id of calibrated_volume
   void declare_fields();
   void tally(const pd_tally &t);
   void report_setup();

@@ -209,7 +209,6 @@ double *PairPDCorr::field(const char *name) const
 void PairPDCorr::setup_run()
 {
   const int ntypes = atom->ntypes;
-  complete_volume = complete_family_volumes();
   material.assign(ntypes + 1, pd_corr_material{});
   for (int t = 1; t <= ntypes; t++) {
     if (!setflag[t][t]) continue;
@@ -282,11 +281,11 @@ void PairPDCorr::fill_reference_vectors()
     }
 }
 
-// N = d / m of a complete family of the atom's type (the influence
-// function's normalization tr_w(1) = d, T14 eq. 4.5)
+// N = d / m of the atom's calibrated family (the influence function's
+// normalization tr_w(1) = d, T14 eq. 4.5; core/pd_calibration.h)
 double PairPDCorr::family_norm(int i) const
 {
-  const double m = complete_volume[atom->type[i]];
+  const double m = calibrated_volume(i);
   return m > 0.0 ? dim() / m : 0.0;
 }
 

@@ -38,7 +38,6 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   // of a bond = w eps_m (n . Sigma . n) at each end (pd_corr.h)
   const PDBondEnergies *bond_energies() const override { return extended ? this : nullptr; }
   double family_norm(int i) const override;
-  double complete_family_volume(int type) const override { return complete_volume[type]; }
   pd_influence_kind influence_kind() const override { return (pd_influence_kind) influence; }
 
  protected:
@@ -48,7 +47,6 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   double stabilization;  // coefficient of the non-affine penalty (0: none)
   double order;          // Seth-Hill order m of the strain the law works on
   std::vector<pd_corr_material> material;   // per type
-  std::vector<double> complete_volume;      // per type: weighted volume of a complete family
   double *spring;        // per type pair: PMB micromodulus
   bool shape_stale;      // the families' shapes (field corr_shape) need recomputing
 

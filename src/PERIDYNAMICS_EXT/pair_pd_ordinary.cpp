@@ -34,13 +34,12 @@ using namespace LAMMPS_NS;
 
 PairPDOrdinary::PairPDOrdinary(LAMMPS *lmp) :
     PairPD(lmp, pd_ordinary_coefs, PD_ORD_NCOEFS), influence(-1), per_atom_norm(0), uniform_b(0), order(0.5),
-    bulk_volume(nullptr), lambda_bar(nullptr), mu_bar(nullptr), strain(nullptr), nstrain(0)
+    lambda_bar(nullptr), mu_bar(nullptr), strain(nullptr), nstrain(0)
 {
 }
 
 PairPDOrdinary::~PairPDOrdinary()
 {
-  memory->destroy(bulk_volume);
   memory->destroy(lambda_bar);
   memory->destroy(mu_bar);
   memory->destroy(strain);
@@ -133,18 +132,19 @@ double PairPDOrdinary::inverse_weight_horizon() const
   return h > 0.0 ? h : 0.0;
 }
 
-// N = d / m: m is the atom's own weighted volume with the surface
-// correction, else that of a complete family of its type (T14 6.1.3: no
-// renormalization at free surfaces; surface atoms are softer).
+// N = d / m, m the atom's calibrated weighted volume: its own family's,
+// and near a free surface, without the surface correction, a complete
+// family's of its type (T14 6.1.3: no renormalization at free surfaces;
+// surface atoms are softer). core/pd_calibration.h
 double PairPDOrdinary::norm(int i) const
 {
-  return per_atom_norm ? norm_of(bonds->weighted_volume()[i]) : type_norm(atom->type[i]);
+  return norm_of(calibrated_volume(i));
 }
 
 // N = d / m of a complete family of type t
 double PairPDOrdinary::type_norm(int t) const
 {
-  return norm_of(bulk_volume[t]);
+  return norm_of(calibrated_reference[t]);
 }
 
 double PairPDOrdinary::norm_of(double m) const
@@ -152,19 +152,14 @@ double PairPDOrdinary::norm_of(double m) const
   return m > 0.0 ? dim() / m : 0.0;
 }
 
-// Per run: the Lame constants per type and the complete-family weighted
-// volume, the largest over the type's atoms (an interior atom's).
+// Per run: the Lame constants per type.
 void PairPDOrdinary::setup_run()
 {
   const int ntypes = atom->ntypes;
-  memory->destroy(bulk_volume);
   memory->destroy(lambda_bar);
   memory->destroy(mu_bar);
-  memory->create(bulk_volume, ntypes + 1, "pair:bulk_volume");
   memory->create(lambda_bar, ntypes + 1, "pair:lambda_bar");
   memory->create(mu_bar, ntypes + 1, "pair:mu_bar");
-  const std::vector<double> complete = complete_family_volumes();
-  std::copy(complete.begin(), complete.end(), bulk_volume);
   for (int t = 1; t <= ntypes; t++) {
     pd_elastic m;
     pd_elastic_from_K_G(coef[PD_ORD_K][t][t], coef[PD_ORD_G][t][t], &m);
@@ -173,9 +168,9 @@ void PairPDOrdinary::setup_run()
     mu_bar[t] = l.mu;
   }
   // B = 2 mu_bar N (pd_ordinary_atom) is one number for all atoms when N is
-  // its type's and every type has the same: the force pass then gathers no
-  // far end's B
-  uniform_b = !per_atom_norm;
+  // its type's (a lattice's atoms without surface correction) and every
+  // type has the same: the force pass then gathers no far end's B
+  uniform_b = !per_atom_norm && calibration_uniform();
   const double b1 = pd_ordinary_atom(lambda_bar[1], mu_bar[1], type_norm(1), 0.0).b;
   for (int t = 2; t <= ntypes; t++)
     if (pd_ordinary_atom(lambda_bar[t], mu_bar[t], type_norm(t), 0.0).b != b1) uniform_b = 0;

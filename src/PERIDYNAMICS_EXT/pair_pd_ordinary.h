@@ -31,7 +31,6 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   void fracture_elastic(int i, int j, double &E, double &nu) const override;
   const PDBondEnergies *bond_energies() const override { return this; }
   double family_norm(int i) const override { return norm(i); }
-  double complete_family_volume(int type) const override { return bulk_volume[type]; }
   pd_influence_kind influence_kind() const override { return (pd_influence_kind) influence; }
 
  protected:
@@ -39,7 +38,6 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   int per_atom_norm;   // surface correction: normalize by each atom's weighted volume
   int uniform_b;       // B = 2 mu_bar N is one number for all atoms (setup_run)
   double order;        // Seth-Hill order m, the same for all types
-  double *bulk_volume; // per type: weighted volume of a complete family
   double *lambda_bar, *mu_bar;    // per type: peridynamic Lame constants
   // per-atom fields in the bond store (per_atom_fields(), field_id)
   enum { F_DILATATION, F_AB };
@@ -63,6 +61,7 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   std::string family_settings() const override;
   double norm(int i) const;
   double type_norm(int t) const;
+  bool surface_corrected() const override { return per_atom_norm != 0; }
   double norm_of(double m) const;
 };
 

@@ -6,6 +6,7 @@
 #include "pd_failure_law.h"
 
 #include "error.h"
+#include "fix_pd_bonds.h"
 #include "pair_pd.h"
 
 #include <cmath>
@@ -126,6 +127,12 @@ bool PDFailureLaw::legacy_mode() const
 FixPDBonds *PDFailureLaw::bonds() const
 {
   return pair->bonds;
+}
+
+double *PDFailureLaw::field(const char *name) const
+{
+  const int id = pair->field_index(name);
+  return id < 0 ? nullptr : pair->bonds->field(id);
 }
 
 void PDFailureLaw::check_derived(int k, int i, int j)

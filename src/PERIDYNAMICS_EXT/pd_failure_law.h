@@ -16,6 +16,7 @@
 #ifndef LMP_PD_FAILURE_LAW_H
 #define LMP_PD_FAILURE_LAW_H
 
+#include "pd_field.h"
 #include "pointers.h"
 
 #include <memory>
@@ -42,8 +43,7 @@ struct PDCoefLine;
 // give those energies (bond-based bonds have no per-end state).
 class PDBondEnergies {
  public:
-  virtual double family_norm(int i) const = 0;                 // N = d / m of atom i
-  virtual double complete_family_volume(int type) const = 0;   // m of a complete family (setup)
+  virtual double family_norm(int i) const = 0;    // N = d / m of atom i, m its calibrated weighted volume
   virtual pd_influence_kind influence_kind() const = 0;
 
  protected:
@@ -93,6 +93,10 @@ class PDFailureLaw : protected Pointers {
   // by their rules (explicit: a pair_coeff I J line gave the pair)
   virtual void mix(int, int, bool) {}
 
+  // per-atom state it keeps in the bond store (pd_field.h), declared with
+  // the pair style's
+  virtual std::vector<PDField> per_atom_fields() const { return {}; }
+
   // --- run
   virtual void setup_run() {}                          // all ranks, first compute of a run
   virtual const void *evaluation() { return nullptr; } // the core's parameter struct for one evaluation
@@ -138,6 +142,7 @@ class PDFailureLaw : protected Pointers {
   bool plane_strain() const;
   bool legacy_mode() const;
   FixPDBonds *bonds() const;
+  double *field(const char *name) const;    // one of per_atom_fields() in the bond store
   void check_derived(int k, int i, int j);
 };
 

@@ -88,18 +88,26 @@ class LawEnergy : public PDFailureLaw {
       error->all(FLERR, "Pair {}: 'fail energy' with influence {} in 2D: the G_c integral diverges "
                  "(T14 eq. 6.2); use influence constant or tupek", style(),
                  pd_influence_name(m->influence_kind()));
-    // ... and beta is calibrated on the lattice itself: the complete
-    // family's moment sum w V / |xi|, the largest of the type
+    // ... and beta is calibrated on each atom's family: its moment
+    // sum w V / |xi| and weighted volume, calibrated as the material's
+    // (core/pd_calibration.h)
     const int nall = atom->nlocal + atom->nghost;
-    std::vector<double> sum(nall, 0.0), mine(n, 0.0), moment(n, 0.0);
+    std::vector<double> sum(nall, 0.0);
     const pd_bond_view v = bonds()->view();
     pd_failure_moment(&v, atom->vfrac, sum.data());
     bonds()->sum_to_owners(sum.data());
-    for (int i = 0; i < atom->nlocal; i++) mine[atom->type[i]] = MAX(mine[atom->type[i]], sum[i]);
-    MPI_Allreduce(mine.data(), moment.data(), n, MPI_DOUBLE, MPI_MAX, world);
+    const std::vector<double> moment = pair->calibrate(sum.data());
+    double *b = field(BETA);
+    for (int i = 0; i < atom->nlocal; i++)
+      b[i] = pd_energy_failure_beta_lattice(dim(), 1.0, pair->calibrated_volume(i), sum[i]);
     beta.assign(n, 0.0);
     for (int t = 1; t <= ntypes; t++)
-      beta[t] = pd_energy_failure_beta_lattice(dim(), 1.0, m->complete_family_volume(t), moment[t]);
+      beta[t] = pd_energy_failure_beta_lattice(dim(), 1.0, pair->complete_volume(t), moment[t]);
+  }
+
+  std::vector<PDField> per_atom_fields() const override
+  {
+    return {{BETA, 1, PDField::MIGRATE | PDField::OUTPUT}};
   }
 
   // beta N per atom for G_c = 1; fixed per atom, so ghosts need it again
@@ -112,7 +120,8 @@ class LawEnergy : public PDFailureLaw {
       memory->destroy(crit);
       memory->create(crit, ncrit, "pd/energy:crit");
     }
-    for (int i = 0; i < atom->nlocal; i++) crit[i] = beta[atom->type[i]] * m->family_norm(i);
+    const double *b = field(BETA);
+    for (int i = 0; i < atom->nlocal; i++) crit[i] = b[i] * m->family_norm(i);
     if (neighbor->ago == 0) bonds()->copy_to_ghosts(crit);
     params = {crit, pd_failure_floor(crit, atom->nlocal + atom->nghost), gc.data()};
     return &params;
@@ -140,7 +149,8 @@ class LawEnergy : public PDFailureLaw {
 
  private:
   std::vector<double> gc;      // per type pair G_c (+inf: the pair does not fail)
-  std::vector<double> beta;    // per type beta for G_c = 1
+  static constexpr const char *BETA = "energy_failure_beta";    // per atom beta for G_c = 1
+  std::vector<double> beta;    // per type beta for G_c = 1, of a complete family
   double *crit = nullptr;      // per atom beta N for G_c = 1 (owned + ghost)
   int ncrit = 0;
   pd_law_energy params;

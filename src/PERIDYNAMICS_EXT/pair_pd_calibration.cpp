@@ -1,0 +1,167 @@
+/* ----------------------------------------------------------------------
+   PERIDYNAMICS_EXT: each family calibrated on itself (core/pd_calibration.h).
+   At each run's set-up the bond store's reference sums (family volume,
+   weighted volume: of every bond, broken or not, so a family that loses
+   bonds keeps its calibration) give each atom its share of its own sums
+   and its calibrated weighted volume. Both live in the bond store as
+   per-atom fields that migrate with the atoms during the run.
+------------------------------------------------------------------------- */
+
+#include "pair_pd.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "fix_pd_bonds.h"
+
+#include <cmath>
+#include <mpi.h>
+
+extern "C" {
+#include "pd_calibration.h"
+}
+
+using namespace LAMMPS_NS;
+
+// The per-type median of q over the owned atoms that 'take' selects, on
+// all ranks: bisection on the count of values at or below a guess (one
+// reduction per step), then the smallest value above the lower bound,
+// which is the median itself. NaN for a type with no selected atom.
+std::vector<double> PairPD::type_medians(const double *q, const std::function<bool(int)> &take) const
+{
+  const int n = atom->ntypes + 1;
+  std::vector<double> lo(n, INFINITY), hi(n, -INFINITY), count(n, 0.0), rank(n, 0.0);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (take(i)) {
+      const int t = atom->type[i];
+      lo[t] = MIN(lo[t], q[i]);
+      hi[t] = MAX(hi[t], q[i]);
+      count[t] += 1.0;
+    }
+  MPI_Allreduce(MPI_IN_PLACE, lo.data(), n, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(MPI_IN_PLACE, hi.data(), n, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(MPI_IN_PLACE, count.data(), n, MPI_DOUBLE, MPI_SUM, world);
+  // the lower median is the k-th smallest: count(q <= lo) < k <= count(q <= hi)
+  for (int t = 0; t < n; t++) {
+    rank[t] = floor(0.5 * (count[t] + 1.0));
+    lo[t] = std::nextafter(lo[t], -INFINITY);
+  }
+  std::vector<double> mid(n), below(n);
+  for (int step = 0; step < 100; step++) {
+    bool open = false;
+    for (int t = 0; t < n; t++) {
+      mid[t] = 0.5 * (lo[t] + hi[t]);
+      open = open || (count[t] > 0.0 && mid[t] > lo[t] && mid[t] < hi[t] && hi[t] - lo[t] > 1e-15 * fabs(hi[t]));
+      below[t] = 0.0;
+    }
+    if (!open) break;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (take(i) && q[i] <= mid[atom->type[i]]) below[atom->type[i]] += 1.0;
+    MPI_Allreduce(MPI_IN_PLACE, below.data(), n, MPI_DOUBLE, MPI_SUM, world);
+    for (int t = 0; t < n; t++)
+      if (count[t] > 0.0 && mid[t] > lo[t] && mid[t] < hi[t]) (below[t] >= rank[t] ? hi[t] : lo[t]) = mid[t];
+  }
+  std::vector<double> median(n, INFINITY);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (take(i) && q[i] > lo[atom->type[i]]) median[atom->type[i]] = MIN(median[atom->type[i]], q[i]);
+  MPI_Allreduce(MPI_IN_PLACE, median.data(), n, MPI_DOUBLE, MPI_MIN, world);
+  for (int t = 0; t < n; t++)
+    if (count[t] == 0.0) median[t] = NAN;
+  return median;
+}
+
+// The interior family volume of each type and the tolerance of its
+// scatter. On a lattice the interior atoms share the largest family volume
+// (to round-off): it is the interior one, and nothing scatters. Otherwise
+// (an irregular arrangement, where the largest is an outlier) the median
+// over the atoms within the window of the largest, then again within the
+// window of that median, and the robust scatter about it. Then each atom's
+// share of its own sums and its calibrated weighted volume.
+void PairPD::calibrate_families()
+{
+  const double *v = bonds->family_volume();
+  const int n = atom->ntypes + 1;
+  std::vector<double> largest(n, 0.0), at_largest(n, 0.0);
+  for (int i = 0; i < atom->nlocal; i++) largest[atom->type[i]] = MAX(largest[atom->type[i]], v[i]);
+  MPI_Allreduce(MPI_IN_PLACE, largest.data(), n, MPI_DOUBLE, MPI_MAX, world);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (v[i] >= (1.0 - 1e-12) * largest[atom->type[i]]) at_largest[atom->type[i]] += 1.0;
+  MPI_Allreduce(MPI_IN_PLACE, at_largest.data(), n, MPI_DOUBLE, MPI_SUM, world);
+  std::vector<double> interior = largest, ref;
+  const auto candidate = [&](int i) { return v[i] >= (1.0 - PD_CALIBRATION_WINDOW) * ref[atom->type[i]]; };
+  for (int pass = 0; pass < 2; pass++) {
+    ref = interior;
+    interior = type_medians(v, candidate);
+  }
+  ref = interior;
+  std::vector<double> deviation(atom->nlocal);
+  for (int i = 0; i < atom->nlocal; i++) deviation[i] = fabs(v[i] - interior[atom->type[i]]);
+  const std::vector<double> mad = type_medians(deviation.data(), candidate);
+  family_tolerance.assign(n, 0.0);
+  for (int t = 1; t < n; t++) {
+    const bool lattice = at_largest[t] >= 2.0;
+    if (lattice) interior[t] = largest[t];
+    const double scatter = lattice || !(interior[t] > 0.0) ? 0.0 : 1.4826 * mad[t] / interior[t];
+    family_tolerance[t] = pd_calibration_tolerance(scatter);
+  }
+  double *share = bonds->field(field_index("family_share"));
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int t = atom->type[i];
+    const double c = interior[t] > 0.0 ? v[i] / interior[t] : 0.0;
+    share[i] = surface_corrected() ? 1.0 : pd_calibration_share(c, family_tolerance[t]);
+  }
+  double *m = bonds->field(field_index("calibrated_volume"));
+  for (int i = 0; i < atom->nlocal; i++) m[i] = bonds->weighted_volume()[i];
+  calibrated_reference = calibrate(m);
+
+  // the log: per type, how the atoms were calibrated
+  std::vector<double> kinds(3 * n, 0.0);
+  for (int i = 0; i < atom->nlocal; i++)
+    kinds[3 * atom->type[i] + (share[i] >= 1.0 ? 0 : share[i] > 0.0 ? 1 : 2)] += 1.0;
+  MPI_Allreduce(MPI_IN_PLACE, kinds.data(), 3 * n, MPI_DOUBLE, MPI_SUM, world);
+  std::string types;
+  for (int t = 1; t < n; t++) {
+    if (kinds[3 * t] + kinds[3 * t + 1] + kinds[3 * t + 2] == 0.0 || !(interior[t] > 0.0)) continue;
+    const std::string arrangement = at_largest[t] >= 2.0
+        ? "lattice"
+        : fmt::format("irregular, tolerance {:.1f}% of the interior family volume", 100.0 * family_tolerance[t]);
+    types += fmt::format(" type {} ({}): {:.0f} atoms on their own family, {:.0f} blended, {:.0f} on the "
+                         "complete one;", t, arrangement, kinds[3 * t], kinds[3 * t + 1], kinds[3 * t + 2]);
+  }
+  if (comm->me == 0)
+    utils::logmesg(lmp, "{}: families calibrated on themselves ({}):{}\n", style_name(),
+                   surface_corrected() ? "surfaces too" : "free surfaces on a complete family", types);
+}
+
+// In place over the owned atoms: q (a sum over each atom's reference
+// family) becomes s q + (1 - s) q_complete, q_complete the median over the
+// type's interior atoms (s = 1), or the type's largest where none is
+// interior (a body thinner than two horizons). Returns q_complete by type.
+std::vector<double> PairPD::calibrate(double *q) const
+{
+  const double *share = bonds->field(field_index("family_share"));
+  std::vector<double> complete = type_medians(q, [&](int i) { return share[i] >= 1.0; });
+  std::vector<double> largest(complete.size(), 0.0);
+  for (int i = 0; i < atom->nlocal; i++) largest[atom->type[i]] = MAX(largest[atom->type[i]], q[i]);
+  MPI_Allreduce(MPI_IN_PLACE, largest.data(), (int) largest.size(), MPI_DOUBLE, MPI_MAX, world);
+  for (size_t t = 0; t < complete.size(); t++)
+    if (std::isnan(complete[t])) complete[t] = largest[t];
+  for (int i = 0; i < atom->nlocal; i++) q[i] = pd_calibrated(q[i], complete[atom->type[i]], share[i]);
+  return complete;
+}
+
+// Every owned atom on every rank calibrated on its type's complete family
+// (a lattice's interior and surface alike): the loops may take one
+// normalization per type.
+bool PairPD::calibration_uniform() const
+{
+  const double *m = bonds->field(field_index("calibrated_volume"));
+  int mine = 1, all = 1;
+  for (int i = 0; i < atom->nlocal && mine; i++) mine = m[i] == calibrated_reference[atom->type[i]];
+  MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, world);
+  return all != 0;
+}
+
+double PairPD::calibrated_volume(int i) const
+{
+  return bonds->field(calibrated_field)[i];
+}
