@@ -119,6 +119,12 @@ class PairPD : public Pair, public PDFamilySource {
   // those, the calibration's and the failure law's: what the style
   // declares to the bond store
   std::vector<PDField> fields_to_declare() const;
+  // a bond-based solid: a bond's energy is its own (a critical stretch
+  // from G_c is then calibrated on the family, core/pd_law_stretch.h), and
+  // how much type t's stiffness is scaled by its own calibration
+  // (core/pd_params.h pd_pmb_moment_continuum)
+  virtual bool bond_based() const { return false; }
+  virtual double stiffness_scale(int) const { return 1.0; }
   // E and nu of the bonds between two types, for a critical stretch from
   // G_c (MS07 eq. 28-29)
   virtual void fracture_elastic(int i, int j, double &E, double &nu) const = 0;

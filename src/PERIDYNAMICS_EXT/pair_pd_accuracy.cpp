@@ -120,16 +120,16 @@ void PairPD::report_accuracy(const PDFamilySpec &spec)
                      style_name(), t, where, ratio, quad, percent(err.dilatation), percent(err.shear_xx_yy),
                      percent(err.shear_xy));
     }
-    const int release = law->release_kind(t, linear && kind == PD_LINEAR_PMB);
+    const int release = law->release_kind(t, linear && (kind == PD_LINEAR_PMB || kind == PD_LINEAR_PMB_FAMILY));
     pd_family f;
     if (release < 0 || pd_lattice_family(&lat, spec.reach(t, t), thickness, store_weight, &rule, &f) < 1)
       continue;
     const auto across = [&](double deg) {
       const double a = deg * MathConst::MY_PI / 180.0, n[3] = {cos(a), sin(a), 0.0};
-      return pd_release(&f, h, thickness, (pd_release_kind) release, n);
+      return pd_release(&f, (pd_release_kind) release, n);
     };
     double lo, hi;
-    pd_release_range(&f, h, thickness, (pd_release_kind) release, &lo, &hi);
+    pd_release_range(&f, (pd_release_kind) release, &lo, &hi);
     utils::logmesg(lmp, "{}: type {}: a crack releases {:.3f} .. {:.3f} G_c by its orientation (lattice "
                    "sums): normal along x {:.3f}, at 22.5 degrees {:.3f}, at 45 degrees {:.3f}\n",
                    style_name(), t, lo, hi, across(0.0), across(22.5), across(45.0));

@@ -16,6 +16,7 @@
 
 extern "C" {
 #include "pd_bond_based.h"
+#include "pd_calibration.h"
 #include "pd_params.h"
 #include "pd_tangent.h"
 #include "pd_timestep.h"
@@ -102,12 +103,46 @@ void PairPDBond::fracture_elastic(int i, int j, double &E, double &nu) const
   nu = pd_pmb_poisson(model_dim);
 }
 
+// Per run: each type's stiffness calibrated on its complete family (the
+// median interior family's moment sum w V |xi|, core/pd_calibration.h),
+// and the micromodulus of each type pair: the mean of the two types'
+// scales, where the pair's stiffness was given as E or K (a micromodulus c
+// given as such, and legacy PERI, are taken as they are).
+void PairPDBond::setup_run()
+{
+  const int n = atom->ntypes + 1;
+  std::vector<double> moment(atom->nlocal + atom->nghost, 0.0);
+  const pd_bond_view v = bonds->view();
+  pd_family_moment(&v, atom->vfrac, 1, moment.data());
+  bonds->sum_to_owners(moment.data());
+  const std::vector<double> complete = calibrate(moment.data());
+  kappa.assign(n, 1.0);
+  for (int t = 1; t < n; t++) {
+    const double continuum = pd_pmb_moment_continuum(dim(), horizon(t, t), thickness);
+    if (!legacy && complete[t] > 0.0 && std::isfinite(continuum)) kappa[t] = continuum / complete[t];
+  }
+  micromodulus.assign((size_t) n * n, 0.0);
+  for (int i = 1; i < n; i++)
+    for (int j = 1; j < n; j++) {
+      const bool from_moduli = given(PD_BOND_E, i, j) || given(PD_BOND_K, i, j);
+      micromodulus[i * n + j] = coef[PD_BOND_C][i][j] * (from_moduli ? 0.5 * (kappa[i] + kappa[j]) : 1.0);
+    }
+}
+
+void PairPDBond::report_extra()
+{
+  std::string scales;
+  for (int t = 1; t <= atom->ntypes; t++) scales += fmt::format(" type {} {:.4f};", t, kappa[t]);
+  utils::logmesg(lmp, "pd/bond: micromodulus from E or K calibrated on the complete family (its moment sum "
+                 "w V |xi| against the continuum's), scale:{}\n", scales);
+}
+
 void PairPDBond::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (report_pending) report_setup();
 
-  const pd_pmb mat = {coef[PD_BOND_C][0]};
+  const pd_pmb mat = {micromodulus.data()};
   Evaluation e;
   if (plastic) {
     if (failing())
@@ -129,7 +164,7 @@ void PairPDBond::compute(int eflag, int vflag)
 void PairPDBond::stable_dt_sum(double *sum)
 {
   const pd_bond_view v = bonds->view();
-  const pd_pmb mat = {coef[PD_BOND_C][0]};
+  const pd_pmb mat = {micromodulus.data()};
   pd_pmb_stiffness(&v, &mat, atom->type, atom->ntypes + 1, atom->vfrac, sum);
 }
 
@@ -137,7 +172,7 @@ void PairPDBond::tangent_sum(double *sum, double *closing)
 {
   Evaluation e;
   begin_pass(e);
-  const pd_pmb_tangent ctx = {coef[PD_BOND_C][0], plastic ? bonds->history_data() : nullptr};
+  const pd_pmb_tangent ctx = {micromodulus.data(), plastic ? bonds->history_data() : nullptr};
   pd_pmb_tangent_sums(&e.L, atom->v[0], &ctx, sum, closing);
 }
 

@@ -25,10 +25,20 @@ class PairPDBond : public PairPD {
   const char *style_name() const override { return "pd/bond"; }
   double contact_micromodulus(int i, int j) const override;
   void fracture_elastic(int i, int j, double &E, double &nu) const override;
+  bool bond_based() const override { return true; }
+  double stiffness_scale(int t) const override { return t < (int) kappa.size() ? kappa[t] : 1.0; }
 
  protected:
   int model;            // word given with the last pair_coeff (pmb or microplastic)
   int plastic;          // some type pair is microplastic: per-bond plastic stretch
+  // the micromoduli calibrated on the types' complete families (c when given as
+  // E or K: core/pd_params.h pd_pmb_moment_continuum), per type pair, and the
+  // scale of each type
+  std::vector<double> micromodulus;
+  std::vector<double> kappa;
+
+  void setup_run() override;
+  void report_extra() override;
 
   int parse_model(const char *) override;
   void check_coeff(int, int) override;
@@ -42,7 +52,7 @@ class PairPDBond : public PairPD {
   // PMB: its relative lattice error does not depend on the stiffness
   bool linear_model(int, pd_linear_kind &kind, pd_elastic &e) const override
   {
-    kind = PD_LINEAR_PMB;
+    kind = legacy ? PD_LINEAR_PMB : PD_LINEAR_PMB_FAMILY;
     return pd_elastic_from_E_nu(1.0, pd_pmb_poisson(model_dim), &e) == 0;
   }
 };

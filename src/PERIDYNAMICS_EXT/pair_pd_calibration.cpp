@@ -87,7 +87,11 @@ void PairPD::calibrate_families()
     if (v[i] >= (1.0 - 1e-12) * largest[atom->type[i]]) at_largest[atom->type[i]] += 1.0;
   MPI_Allreduce(MPI_IN_PLACE, at_largest.data(), n, MPI_DOUBLE, MPI_SUM, world);
   std::vector<double> interior = largest, ref;
-  const auto candidate = [&](int i) { return v[i] >= (1.0 - PD_CALIBRATION_WINDOW) * ref[atom->type[i]]; };
+  // (a lattice's types need no median)
+  const auto candidate = [&](int i) {
+    const int t = atom->type[i];
+    return at_largest[t] < 2.0 && v[i] >= (1.0 - PD_CALIBRATION_WINDOW) * ref[t];
+  };
   for (int pass = 0; pass < 2; pass++) {
     ref = interior;
     interior = type_medians(v, candidate);

@@ -17,6 +17,7 @@
 #include <cmath>
 
 extern "C" {
+#include "pd_calibration.h"
 #include "pd_law_energy.h"
 #include "pd_orientation.h"
 }
@@ -94,7 +95,7 @@ class LawEnergy : public PDFailureLaw {
     const int nall = atom->nlocal + atom->nghost;
     std::vector<double> sum(nall, 0.0);
     const pd_bond_view v = bonds()->view();
-    pd_failure_moment(&v, atom->vfrac, sum.data());
+    pd_family_moment(&v, atom->vfrac, -1, sum.data());
     bonds()->sum_to_owners(sum.data());
     const std::vector<double> moment = pair->calibrate(sum.data());
     double *b = field(BETA);

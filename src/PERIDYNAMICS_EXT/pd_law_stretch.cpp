@@ -5,12 +5,15 @@
 
 #include "pd_failure_law.h"
 
+#include "atom.h"
 #include "error.h"
+#include "fix_pd_bonds.h"
 #include "pair_pd.h"
 
 #include <cmath>
 
 extern "C" {
+#include "pd_calibration.h"
 #include "pd_law_stretch.h"
 #include "pd_orientation.h"
 }
@@ -78,19 +81,61 @@ class LawStretch : public PDFailureLaw {
   }
 
   // a bond-based material's bonds, broken at the critical stretch of its G_c
+  // calibrated on the family
   int release_kind(int t, bool bond_based) const override
   {
-    return bond_based && given(GC, t, t) ? PD_RELEASE_BOND_BASED : -1;
+    return bond_based && given(GC, t, t) && pair->bond_based() && !legacy_mode() ? PD_RELEASE_BOND_BASED : -1;
+  }
+
+  // Per run: a bond-based solid's critical stretch from G_c calibrated on
+  // the types' complete families (core/pd_law_stretch.h
+  // pd_critical_stretch_factor: their median interior moment sum
+  // w V |xi|^2 and the material's stiffness scale), the mean of the two
+  // types' factors for a pair. An s0 given as such, legacy PERI, and
+  // state-based materials (whose bond energy is not the bond-based one the
+  // formula assumes) take s0 as it is.
+  void setup_run() override
+  {
+    const int n = atom->ntypes + 1;
+    factor.assign(n, 1.0);
+    if (pair->bond_based() && !legacy_mode()) {
+      std::vector<double> moment(atom->nlocal + atom->nghost, 0.0);
+      const pd_bond_view v = bonds()->view();
+      pd_family_moment(&v, atom->vfrac, 2, moment.data());
+      bonds()->sum_to_owners(moment.data());
+      const std::vector<double> complete = pair->calibrate(moment.data());
+      for (int t = 1; t < n; t++)
+        factor[t] = pd_critical_stretch_factor(dim(), pair->horizon(t, t), pair->plate_thickness(),
+                                               pair->stiffness_scale(t), complete[t]);
+    }
+    s0.assign((size_t) n * n, INFINITY);
+    const double *given_s0 = table(S0);
+    for (int i = 1; i < n; i++)
+      for (int j = 1; j < n; j++)
+        s0[i * n + j] = given_s0[i * n + j] * (given(GC, i, j) ? 0.5 * (factor[i] + factor[j]) : 1.0);
   }
 
   const void *evaluation() override
   {
-    params = {table(S0), 0};
+    params = {s0.data(), 0};
     return &params;
+  }
+
+  void report() const override
+  {
+    const int n = atom->ntypes + 1;
+    std::string types;
+    for (int t = 1; t < n; t++)
+      if (given(GC, t, t))
+        types += fmt::format(" type {} s0 {:.4g} (continuum {:.4g});", t, s0[t * n + t], table(S0)[t * n + t]);
+    if (!types.empty() && pair->bond_based() && !legacy_mode())
+      utils::logmesg(lmp, "{}: fail stretch from G_c, calibrated on the family:{}\n", style(), types);
   }
 
  private:
   pd_law_stretch params;
+  std::vector<double> factor;    // per type: s0 from G_c calibrated on its complete family over the continuum's
+  std::vector<double> s0;        // per type pair: the critical stretch of the run
 
   // the critical stretch of bond-based elasticity (MS07 eq. 28-29) for the
   // pair's E and nu (the material's; between two types, their means)

@@ -118,6 +118,8 @@ int exact_setup(const exact_input *in, exact_problem *p, FILE *err)
     } else {
       if (elastic(in, p->pdim, &e, err)) return -1;
       p->classical = pd_linear_classical(p->pdim, &e);
+      /* pd/bond calibrates a micromodulus from E or K on the family */
+      p->model.c *= pd_pmb_moment_continuum(d, in->horizon, in->thickness) / pd_family_moment_sum(&p->fam, 1);
     }
   } else if (ordinary) {
     if (d == 1) return fail(err, "ordinary: 2D or 3D lattices only");

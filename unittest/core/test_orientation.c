@@ -2,6 +2,7 @@
  * lattice sums (core/pd_orientation.c). */
 #include "check.h"
 #include "pd_influence.h"
+#include "pd_law_stretch.h"
 #include "pd_orientation.h"
 
 
@@ -24,18 +25,18 @@ static void one_pair(void)
   pd_family_bond b[2] = {{{2.0, 0, 0}, 2.0, 0.7, {0}}, {{-2.0, 0, 0}, 2.0, 0.7, {0}}};
   pd_family f = {3, 2, 1.0, b};
   const double nx[3] = {1, 0, 0};
-  check_rel("one pair, 3D, energy law: 1 / (2 <cos+>) = 2", pd_release(&f, 3.0, 1.0, PD_RELEASE_ENERGY_LAW, nx), 2.0,
+  check_rel("one pair, 3D, energy law: 1 / (2 <cos+>) = 2", pd_release(&f, PD_RELEASE_ENERGY_LAW, nx), 2.0,
             1e-15);
   f.dim = 2;
-  check_rel("one pair, 2D, energy law: pi / 2", pd_release(&f, 3.0, 1.0, PD_RELEASE_ENERGY_LAW, nx), acos(-1.0) / 2,
+  check_rel("one pair, 2D, energy law: pi / 2", pd_release(&f, PD_RELEASE_ENERGY_LAW, nx), acos(-1.0) / 2,
             1e-15);
-  /* bond-based: (xi.n) |xi| w cell / (pi delta^5 / 5) = 2 * 2 * 0.7 * 5 / (pi 3^5) */
+  /* bond-based, calibrated on the family: (xi.n)+ |xi| w over <cos+> sum |xi|^2 w
+   * = 2 * 2 * 0.7 / (0.25 * 2 * 4 * 0.7) = 2 */
   f.dim = 3;
-  check_rel("one pair, 3D, bond-based: sum (xi.n)+ |xi| w V / (pi delta^5 / 5)",
-            pd_release(&f, 3.0, 1.0, PD_RELEASE_BOND_BASED, nx), 2.8 * 5.0 / (acos(-1.0) * 243.0), 1e-15);
+  check_rel("one pair, 3D, bond-based: 1 / (2 <cos+>) = 2", pd_release(&f, PD_RELEASE_BOND_BASED, nx), 2.0, 1e-15);
   const double n45[3] = {sqrt(0.5), sqrt(0.5), 0};
   check_rel("one pair, plane at 45 degrees: cos 45 of the release along x",
-            pd_release(&f, 3.0, 1.0, PD_RELEASE_BOND_BASED, n45), sqrt(0.5) * 2.8 * 5.0 / (acos(-1.0) * 243.0), 1e-15);
+            pd_release(&f, PD_RELEASE_BOND_BASED, n45), sqrt(0.5) * 2.0, 1e-15);
 }
 
 /* The energy law is calibrated on the orientation average: the mean of
@@ -53,13 +54,13 @@ static void average_is_calibrated(int dim)
     } else {
       n[0] = cos(2 * acos(-1.0) * k / count), n[1] = sin(2 * acos(-1.0) * k / count), n[2] = 0;
     }
-    mean += pd_release(&f, 3.0, 1.0, PD_RELEASE_ENERGY_LAW, n) / count;
+    mean += pd_release(&f, PD_RELEASE_ENERGY_LAW, n) / count;
   }
   char what[120];
   snprintf(what, sizeof what, "%dD energy law: mean over orientations is G_c (sampling 1e-4)", dim);
   check_rel(what, mean, 1.0, 1e-4);
   double lo, hi;
-  pd_release_range(&f, 3.0, 1.0, PD_RELEASE_ENERGY_LAW, &lo, &hi);
+  pd_release_range(&f, PD_RELEASE_ENERGY_LAW, &lo, &hi);
   snprintf(what, sizeof what, "%dD energy law at 3 spacings: orientations spread (%.3f .. %.3f)", dim, lo, hi);
   check_true(what, lo < 0.99 && hi > 1.01 && lo > 0.8 && hi < 1.2);
   pd_family_free(&f);
@@ -71,7 +72,7 @@ static void continuum_limit(int dim, pd_release_kind kind, int influence)
 {
   pd_family f = cubic_family(dim, 16.0, influence);
   double lo, hi;
-  pd_release_range(&f, 16.0, 1.0, kind, &lo, &hi);
+  pd_release_range(&f, kind, &lo, &hi);
   char what[160];
   snprintf(what, sizeof what, "%dD %s, 16 spacings: every orientation within 2%% of G_c (%.4f .. %.4f)", dim,
            kind == PD_RELEASE_ENERGY_LAW ? "energy law" : "bond-based critical stretch", lo, hi);
@@ -79,20 +80,28 @@ static void continuum_limit(int dim, pd_release_kind kind, int influence)
   pd_family_free(&f);
 }
 
-/* The issue's measurement: separating a 3D sc block along a lattice plane
- * released 0.913 G_c (energy law, inverse influence) and 1.15 G_c
- * (critical stretch, pd/bond) at 3 spacings, each within 0.1% of its
- * lattice sum: the sum reproduces both. */
+/* Separating a 3D sc block along a lattice plane released 0.913 G_c (energy
+ * law, inverse influence, calibrated on the family) and 1.15 G_c (critical
+ * stretch, pd/bond, calibrated in the continuum) at 3 spacings, each
+ * within 0.1% of its lattice sum: the sum reproduces both. The critical
+ * stretch calibrated on the family (pd_critical_stretch_factor) scales the
+ * continuum's release by its factor squared times the stiffness scale:
+ * integral of |xi|^2 over sum |xi|^2 w V. */
 static void measured_separations(void)
 {
   const double nx[3] = {1, 0, 0};
   pd_family f = cubic_family(3, 3.0, PD_INFLUENCE_INVERSE);
   check_rel("sc, 3 spacings, energy law, plane along the axes: 0.913 (measured by separation)",
-            pd_release(&f, 3.0, 1.0, PD_RELEASE_ENERGY_LAW, nx), 0.913, 2e-3);
+            pd_release(&f, PD_RELEASE_ENERGY_LAW, nx), 0.913, 2e-3);
   pd_family_free(&f);
   f = cubic_family(3, 3.0, -1);
-  check_rel("sc, 3 spacings, pd/bond critical stretch, along the axes: 1.15 (measured by separation)",
-            pd_release(&f, 3.0, 1.0, PD_RELEASE_BOND_BASED, nx), 1.15, 5e-3);
+  const double calibrated = pd_release(&f, PD_RELEASE_BOND_BASED, nx);
+  const double factor = pd_critical_stretch_factor(3, 3.0, 1.0, 1.0, pd_family_moment_sum(&f, 2));
+  check_rel("sc, 3 spacings, pd/bond critical stretch in the continuum, along the axes: 1.15 (measured by "
+            "separation)", calibrated / (factor * factor), 1.15, 5e-3);
+  char what[160];
+  snprintf(what, sizeof what, "sc, 3 spacings, calibrated on the family: along the axes %.3f, within 3%%", calibrated);
+  check_true(what, fabs(calibrated - 1.0) < 0.03);
   pd_family_free(&f);
 }
 

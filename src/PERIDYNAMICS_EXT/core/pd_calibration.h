@@ -41,4 +41,12 @@ double pd_calibration_share(double completeness, double tolerance);
  * one value exactly (and the loops may take it as a constant). */
 double pd_calibrated(double own, double complete, double share);
 
+/* The family moments the calibrations take, at both ends of every bond
+ * (broken or not): moment_i += w V_j |xi|^power. power -1: the energy law's
+ * failure moment (pd_law_energy.h); 1: a bond-based solid's stiffness
+ * (pd_bond_based.h); 2: the energy of its bonds broken at one critical
+ * stretch (pd_law_stretch.h). */
+struct pd_bond_view;
+void pd_family_moment(const struct pd_bond_view *b, const double *vol, int power, double *moment);
+
 #endif

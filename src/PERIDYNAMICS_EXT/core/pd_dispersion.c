@@ -185,9 +185,11 @@ int pd_lattice_expected_error(const pd_lattice *lat, pd_linear_kind model, pd_di
     return -1;
   pd_elastic ref = *e;
   pd_linear_model m;
-  if (model == PD_LINEAR_PMB) {
+  if (model == PD_LINEAR_PMB || model == PD_LINEAR_PMB_FAMILY) {
     pd_elastic_from_E_nu(e->E, pd_pmb_poisson(dim), &ref);
     m = pd_linear_pmb_E(dim, e->E, horizon, thickness);
+    if (model == PD_LINEAR_PMB_FAMILY)
+      m.c *= pd_pmb_moment_continuum(lat->dim, horizon, thickness) / pd_family_moment_sum(&f, 1);
   } else {
     m = pd_linear_ordinary(dim, e, &f);
   }

@@ -24,7 +24,15 @@
 #include "pd_params.h"
 #include "pd_tensor.h"
 
-typedef enum pd_linear_kind { PD_LINEAR_PMB, PD_LINEAR_ORDINARY, PD_LINEAR_CLASSICAL } pd_linear_kind;
+/* PD_LINEAR_PMB_FAMILY: PMB with its E calibrated on the family (c times
+ * pd_pmb_moment_continuum over the family's sum w V |xi|), as pd/bond sets
+ * it up; only pd_lattice_expected_error takes it (its model is a PMB). */
+typedef enum pd_linear_kind {
+  PD_LINEAR_PMB,
+  PD_LINEAR_ORDINARY,
+  PD_LINEAR_CLASSICAL,
+  PD_LINEAR_PMB_FAMILY
+} pd_linear_kind;
 
 typedef struct pd_linear_model {
   pd_linear_kind kind;
@@ -80,7 +88,8 @@ pd_moduli_error pd_moduli_error_of(const double C[PD_SYM4], const double Cref[PD
  * (the horizon, or farther for partial cells) with the style's bond
  * weights, the model set up as the style sets it up (PMB: c from E with
  * bond-based elasticity's nu, against the classical solid of that E and
- * nu; ordinary: from e, against e), its effective tensor against the
+ * nu, and PMB_FAMILY that c calibrated on the family; ordinary: from e,
+ * against e), its effective tensor against the
  * classical one. Returns 0, or -1 (no bond, no memory; out->worst NaN). */
 int pd_lattice_expected_error(const pd_lattice *lat, pd_linear_kind model, pd_dimension dim,
                               const pd_elastic *e, double horizon, double cutoff, double thickness,

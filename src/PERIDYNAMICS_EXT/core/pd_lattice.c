@@ -134,3 +134,10 @@ double pd_family_weighted_volume(const pd_family *f)
   for (int b = 0; b < f->n; b++) m += f->bond[b].w * f->volume;
   return m;
 }
+
+double pd_family_moment_sum(const pd_family *f, int power)
+{
+  double m = 0.0;
+  for (int b = 0; b < f->n; b++) m += f->bond[b].w * f->volume * pow(f->bond[b].r, power);
+  return m;
+}

@@ -84,4 +84,8 @@ void pd_family_free(pd_family *f);
  * store computes (pd_weighted_volume) for a complete family. */
 double pd_family_weighted_volume(const pd_family *f);
 
+/* sum w V |xi|^power over the family: what pd_family_moment sums per atom
+ * in the bond store, for a complete family. */
+double pd_family_moment_sum(const pd_family *f, int power);
+
 #endif

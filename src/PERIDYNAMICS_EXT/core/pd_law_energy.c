@@ -32,13 +32,3 @@ double pd_energy_failure_beta_lattice(int dim, double Gc, double weighted_volume
   return Gc * weighted_volume / (2.0 * dim * mean_cos * moment);
 }
 
-static inline void weight_per_length(const void *ctx, const pd_bond *bd, double *a, double *b)
-{
-  (void) ctx;
-  *a = *b = bd->w / bd->r0;
-}
-
-void pd_failure_moment(const pd_bond_view *b, const double *vol, double *moment)
-{
-  pd_reference_sums(b, NULL, 0, vol, moment, NULL, weight_per_length, 0);
-}

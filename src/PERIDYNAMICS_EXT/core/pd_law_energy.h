@@ -71,13 +71,12 @@ double pd_energy_failure_beta(pd_influence_kind kind, int dim, double delta, dou
  * averaged (the mean of max(cos, 0) is 1/pi in 2D, 1/4 in 3D), so that
  * cutting bonds across a plane of any orientation releases G_c on average:
  * G = 2 beta N <cos+> sum w V / |xi|, N = d / (sum w V). The sums are those
- * of one complete family: its weighted volume and pd_failure_moment. On a
+ * of one complete family: its weighted volume and its failure moment sum
+ * w V / |xi| (pd_family_moment of power -1). On a
  * simple cubic or square lattice a crack along the lattice axes then
  * releases 0.94-0.97 G_c (delta = 3-6 spacings); the continuum calibration
  * above gives 0.76 G_c in 2D at delta = 3 spacings with a constant omega. */
 double pd_energy_failure_beta_lattice(int dim, double Gc, double weighted_volume, double moment);
 
-/* sum w V_other / |xi| over both ends of every bond (broken or not). */
-void pd_failure_moment(const pd_bond_view *b, const double *vol, double *moment);
 
 #endif

@@ -13,3 +13,11 @@ double pd_critical_stretch(int dim, int plane_strain, double E, double nu, doubl
   if (plane_strain) return sqrt(5.0 * PD_PI * Gc / (12.0 * E * delta));
   return sqrt(4.0 * PD_PI * Gc / (9.0 * E * delta));
 }
+
+double pd_critical_stretch_factor(int dim, double delta, double thickness, double stiffness, double moment2)
+{
+  if (!(moment2 > 0.0) || !(stiffness > 0.0)) return 1.0;
+  const double d4 = delta * delta * delta * delta;
+  const double integral = dim == 3 ? 4.0 * PD_PI * d4 * delta / 5.0 : PD_PI * d4 * thickness / 2.0;
+  return sqrt(integral / (stiffness * moment2));
+}

@@ -56,4 +56,16 @@ PD_INLINE double pd_law_stretch_notes(const pd_failure *f, const pd_bond *bd)
  * (stress) or 1 (strain). */
 double pd_critical_stretch(int dim, int plane_strain, double E, double nu, double delta, double Gc);
 
+/* That critical stretch calibrated on a family: bonds broken at s0 release
+ * c s0^2 |xi| w / 2 each, and across planes of every orientation, on
+ * average, c s0^2 <cos+> sum w V |xi|^2 / 2 per unit area (<cos+> the mean of
+ * the positive part of the cosine: 1/4 in 3D, 1/pi in 2D); the continuum
+ * calibration above takes the integral of |xi|^2 over the horizon (times
+ * t in 2D) in place of the sum. With the stiffness scaled by 'stiffness'
+ * (a bond-based solid calibrated on the family: pd_pmb_moment_continuum),
+ * s0 is multiplied by sqrt(integral / (stiffness sum)), the factor this
+ * returns for moment2 = sum w V |xi|^2 (pd_family_moment of power 2); 1 for
+ * a family without bonds. */
+double pd_critical_stretch_factor(int dim, double delta, double thickness, double stiffness, double moment2);
+
 #endif

@@ -4,31 +4,20 @@
 
 #include <math.h>
 
-double pd_release(const pd_family *f, double delta, double thickness, pd_release_kind kind,
-                  const double n[3])
+double pd_release(const pd_family *f, pd_release_kind kind, const double n[3])
 {
+  /* sum (e.n)+ phi against its orientation average <cos+> sum phi, with
+   * phi ~ w / |xi|^2 (energy law) or w |xi| (bond-based), per unit (xi.n) */
   double across = 0.0, all = 0.0;
   for (int k = 0; k < f->n; k++) {
     const pd_family_bond *b = f->bond + k;
     const double normal = b->xi[0] * n[0] + b->xi[1] * n[1] + b->xi[2] * n[2];
-    if (kind == PD_RELEASE_ENERGY_LAW) {
-      /* sum (e.n)+ w / r against its orientation average <cos+> sum w / r */
-      all += b->w / b->r;
-      if (normal > 0.0) across += normal / b->r * b->w / b->r;
-    } else if (normal > 0.0) {
-      across += normal * b->r * b->w;
-    }
+    const double phi = kind == PD_RELEASE_ENERGY_LAW ? b->w / (b->r * b->r) : b->w * b->r;
+    all += phi * b->r;
+    if (normal > 0.0) across += normal * phi;
   }
-  if (kind == PD_RELEASE_ENERGY_LAW) {
-    const double mean_cos = f->dim == 3 ? 0.25 : 1.0 / PD_PI;
-    return across / (mean_cos * all);
-  }
-  /* the continuum's sum, int over the half ball of (xi.n) |xi| dV, which
-   * the critical stretch is calibrated to release as G_c; per particle the
-   * lattice has its volume (3D) or area (2D) */
-  const double cell = f->dim == 3 ? f->volume : f->volume / thickness;
-  const double continuum = f->dim == 3 ? PD_PI * pow(delta, 5) / 5.0 : pow(delta, 4) / 2.0;
-  return across * cell / continuum;
+  const double mean_cos = f->dim == 3 ? 0.25 : 1.0 / PD_PI;
+  return across / (mean_cos * all);
 }
 
 static void widen(double g, double *lo, double *hi)
@@ -37,8 +26,7 @@ static void widen(double g, double *lo, double *hi)
   if (g > *hi) *hi = g;
 }
 
-void pd_release_range(const pd_family *f, double delta, double thickness, pd_release_kind kind,
-                      double *lo, double *hi)
+void pd_release_range(const pd_family *f, pd_release_kind kind, double *lo, double *hi)
 {
   *lo = INFINITY, *hi = -INFINITY;
   const int count = f->dim == 3 ? 4000 : 360;
@@ -53,11 +41,11 @@ void pd_release_range(const pd_family *f, double delta, double thickness, pd_rel
       const double a = 2.0 * PD_PI * k / count;
       n[0] = cos(a), n[1] = sin(a), n[2] = 0.0;
     }
-    widen(pd_release(f, delta, thickness, kind, n), lo, hi);
+    widen(pd_release(f, kind, n), lo, hi);
   }
   /* the lattice axes, where the extremes of a cubic family often sit */
   for (int a = 0; a < f->dim; a++) {
     const double n[3] = {a == 0, a == 1, a == 2};
-    widen(pd_release(f, delta, thickness, kind, n), lo, hi);
+    widen(pd_release(f, kind, n), lo, hi);
   }
 }

@@ -4,10 +4,10 @@
  * Pairs i, j = i + xi with xi . n > 0 straddle a plane of normal n; per unit
  * area there are (xi . n) / V of them (V the volume per particle), so a
  * plane releases G(n) = sum over xi . n > 0 of (xi . n) phi(xi) / V, with
- * phi the energy of one broken pair. A discrete family makes G depend on n:
- * the calibrations below hold exactly only in the continuum or on average
- * over orientations. The setup report prints G(n) / G_c; the accuracy
- * report sweeps it. */
+ * phi the energy of one broken pair. Both failure laws are calibrated on
+ * the family itself, so that G averaged over orientations is G_c; a
+ * discrete family makes G depend on n about that mean. The setup report
+ * prints G(n) / G_c; the accuracy report sweeps it. */
 #ifndef PD_ORIENTATION_H
 #define PD_ORIENTATION_H
 
@@ -17,20 +17,18 @@ typedef enum pd_release_kind {
   /* fail energy, calibrated on this family averaged over orientations
    * (pd_energy_failure_beta_lattice): phi ~ w / |xi|^2 */
   PD_RELEASE_ENERGY_LAW,
-  /* a bond-based pair broken at the critical stretch calibrated in the
-   * continuum (pd_critical_stretch): phi ~ w |xi| */
+  /* a bond-based pair broken at the critical stretch calibrated on this
+   * family averaged over orientations (pd_critical_stretch_factor):
+   * phi ~ w |xi| */
   PD_RELEASE_BOND_BASED
 } pd_release_kind;
 
 /* G(n) / G_c across a plane of unit normal n, for a complete family f
- * (pd_lattice.h) of horizon delta; thickness: of a 2D family's volumes
- * (ignored in 3D). */
-double pd_release(const pd_family *f, double delta, double thickness, pd_release_kind kind,
-                  const double n[3]);
+ * (pd_lattice.h). */
+double pd_release(const pd_family *f, pd_release_kind kind, const double n[3]);
 
 /* The smallest and largest G(n) / G_c over orientations: 360 normals in the
  * xy plane (2D) or 4000 spread evenly over the sphere (3D). */
-void pd_release_range(const pd_family *f, double delta, double thickness, pd_release_kind kind,
-                      double *lo, double *hi);
+void pd_release_range(const pd_family *f, pd_release_kind kind, double *lo, double *hi);
 
 #endif

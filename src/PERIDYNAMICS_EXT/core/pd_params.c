@@ -54,6 +54,12 @@ double pd_pmb_micromodulus_3d(double bulk, double delta)
   return 18.0 * bulk / (PD_PI * delta * delta * delta * delta);
 }
 
+double pd_pmb_moment_continuum(int dim, double delta, double thickness)
+{
+  const double d3 = delta * delta * delta;
+  return dim == 3 ? PD_PI * d3 * delta : 2.0 * PD_PI * d3 * thickness / 3.0;
+}
+
 pd_lame pd_ordinary_lame(pd_dimension dim, const pd_elastic *m)
 {
   const double mu = m->G;

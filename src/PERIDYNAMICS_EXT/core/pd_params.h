@@ -28,6 +28,13 @@ double pd_pmb_poisson(pd_dimension dim);
 double pd_pmb_micromodulus(pd_dimension dim, double E, double delta, double thickness);
 double pd_pmb_micromodulus_3d(double bulk, double delta);
 
+/* The continuum family's moment that those micromoduli assume, the integral
+ * of |xi| over the horizon (times t in 2D): 3D pi delta^4, 2D 2 pi delta^3 t / 3.
+ * A family's own moment sum w V |xi| (pd_family_moment of power 1) in its
+ * place calibrates c on that family: c_family = c M_continuum / M_family
+ * gives a uniform dilatation the classical energy at its atom. */
+double pd_pmb_moment_continuum(int dim, double delta, double thickness);
+
 /* Peridynamic Lame constants of the ordinary solid (T14 eq. 5.1-5.3):
  * 3D mu_bar = 5 mu / 2, lambda_bar = lambda - mu; 2D mu_bar = 2 mu,
  * lambda_bar = lambda_2D - mu, lambda_2D = E nu / (1 - nu^2) in plane
