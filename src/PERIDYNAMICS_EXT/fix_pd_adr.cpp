@@ -40,7 +40,7 @@ using namespace FixConst;
 FixPDAdr::FixPDAdr(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(nullptr), safety(1.0), every(100), tol(0.0), material(nullptr),
     contact(nullptr), started(0), damping(0.0), residual(NAN), rnorm(0.0), reaction(0.0),
-    reference(0.0), runmax(0.0), iterations(0), run_start(0), converged(0), sums(nullptr),
+    reference(0.0), carried(0.0), runmax(0.0), iterations(0), run_start(0), converged(0), sums(nullptr),
     scratch(nullptr), springs(nullptr), nmax_sums(0)
 {
   for (int iarg = 3; iarg < narg; iarg += 2) {
@@ -150,7 +150,8 @@ void FixPDAdr::setup(int)
   rnorm = sqrt(all[0]);
   reaction = sqrt(all[1]);
   runmax = rnorm;
-  reference = reaction > 0.0 ? reaction : runmax;
+  reference = fmax(reaction, carried);
+  if (reference == 0.0) reference = runmax;
   residual = reference > 0.0 ? rnorm / reference : 0.0;
   // the guard reads the pseudo velocity as a speed: per LAMMPS time unit
   double **v = atom->v;
@@ -220,7 +221,8 @@ void FixPDAdr::final_integrate()
   rnorm = sqrt(all[2]);
   reaction = sqrt(all[3]);
   runmax = fmax(runmax, rnorm);
-  reference = reaction > 0.0 ? reaction : runmax;
+  reference = fmax(reaction, carried);
+  if (reference == 0.0) reference = runmax;
   residual = reference > 0.0 ? rnorm / reference : 0.0;
   if (tol > 0.0 && !converged && residual < tol) {
     converged = 1;
@@ -228,7 +230,7 @@ void FixPDAdr::final_integrate()
       utils::logmesg(lmp, "pd/adr: step {}: relative residual {:.4g} < tol {:.4g} after {} iterations "
                      "of this run (|R| {:.6g}, reference {:.6g} from the {})\n", update->ntimestep,
                      residual, tol, update->ntimestep - run_start, rnorm, reference,
-                     reaction > 0.0 ? "reaction" : "largest |R| of this run");
+                     reference == runmax ? "largest |R| of this run" : "reaction");
   }
 }
 
@@ -268,6 +270,13 @@ void FixPDAdr::update_lambda()
     if (mask[i] & groupbit) state[i][LAMBDA] = pd_adr_density(fmax(sums[i], springs[i]), safety);
 }
 
+// the load the body carried at the end of a load step: the residual's
+// scale once the reaction falls (a crack cut the body in two)
+void FixPDAdr::post_run()
+{
+  carried = fmax(carried, reaction);
+}
+
 double FixPDAdr::compute_scalar()
 {
   return residual;
@@ -293,7 +302,7 @@ double FixPDAdr::compute_vector(int n)
 void FixPDAdr::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double list[3] = {(double) started, damping, (double) iterations};
+  const double list[4] = {(double) started, damping, (double) iterations, carried};
   const int size = sizeof(list);
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(list, sizeof(list), 1, fp);
@@ -301,11 +310,12 @@ void FixPDAdr::write_restart(FILE *fp)
 
 void FixPDAdr::restart(char *buf)
 {
-  double list[3];
+  double list[4];
   memcpy(list, buf, sizeof(list));
   started = (int) list[0];
   damping = list[1];
   iterations = (bigint) list[2];
+  carried = list[3];
 }
 
 void FixPDAdr::grow_arrays(int nmax)

@@ -27,6 +27,7 @@ class FixPDAdr : public Fix {
   void setup(int) override;
   void initial_integrate(int) override;
   void final_integrate() override;
+  void post_run() override;
   double compute_scalar() override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
@@ -59,6 +60,7 @@ class FixPDAdr : public Fix {
   double rnorm;       // |R|: the force on the group's particles (force units)
   double reaction;    // the force on the particles outside the group
   double reference;   // the force scale of the residual
+  double carried;     // the largest reaction at the end of a run: the load the body carried (restart)
   double runmax;      // the largest |R| of this run (the scale when nothing outside the group carries load)
   bigint iterations;  // iterations since the fix started (restart)
   bigint run_start;   // the step this run started at
