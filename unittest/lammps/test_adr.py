@@ -108,6 +108,22 @@ minimize 0 1e-14 40000 100000
     check_le(f"{name}: the middle stretches as the grips do, within 5%", abs(eps_adr / nominal - 1), 0.05,
              f"strain {eps_adr:.5g} against {nominal:.5g}: end effects of rigid grips")
 
+# ---------------------------------------------------------------- bad input
+# each mistake stops with an ERROR that names it
+base = strip(ELASTIC["pd/bond"]).replace("{pull}", str(PULL))
+for what, deck, expect in (
+        ("a safety factor below 1", "fix adr free pd/adr safety 0.5\nrun 10\n", "safety must be a factor >= 1"),
+        ("an unknown keyword", "fix adr free pd/adr damping 0.1\nrun 10\n", "unknown keyword 'damping'"),
+        ("a second integrator on the group", "fix 1 all nve\nfix adr free pd/adr\nrun 10\n",
+         "integrates some of its atoms too"),
+        ("fix pd/timestep next to it", "fix ts all pd/timestep\nfix adr free pd/adr\nrun 10\n",
+         "runs in pseudo time, where fix ts (pd/timestep)"),
+        ("no pd/ material", "pair_style zero 0.002\npair_coeff * *\nfix adr free pd/adr\nrun 10\n",
+         "Fix pd/adr needs a pd/ material pair style")):
+    out, _ = run(base + deck, d, expect_error=True)
+    check(f"bad input: {what} is an ERROR that says so", "ERROR" in out and expect in out,
+          next((l for l in out.splitlines() if "ERROR" in l), "no ERROR")[:160])
+
 # ---------------------------------------------------------------- (2), (3), (4)
 # A notched plate, 20 mm x 15 mm, a 5.75 mm pre-crack from the left edge at
 # mid-height, grips 3 rows deep at top and bottom, opened in load steps.
