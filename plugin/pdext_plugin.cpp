@@ -10,6 +10,7 @@
 #include "compute_pd_atom.h"
 #include "compute_pd_damage.h"
 #include "compute_pd_fracture.h"
+#include "fix_pd_adr.h"
 #include "fix_pd_bonds.h"
 #include "fix_pd_precrack.h"
 #include "fix_pd_timestep.h"
@@ -47,6 +48,8 @@ const Style styles[] = {
     {"pair", "pd/contact", "short-range peridynamic contact", &pair_creator<PairPDContact>, nullptr},
     {"fix", "pd/bonds", "peridynamic bond families", nullptr, &styled_creator<FixPDBonds>},
     {"fix", "pd/precrack", "peridynamic pre-cracks", nullptr, &styled_creator<FixPDPrecrack>},
+    {"fix", "pd/adr", "quasi-static loading by adaptive dynamic relaxation", nullptr,
+     &styled_creator<FixPDAdr>},
     {"fix", "pd/timestep", "adaptive stable time step", nullptr, &styled_creator<FixPDTimestep>},
     {"compute", "pd/atom", "peridynamic per-atom fields", nullptr, &styled_creator<ComputePDAtom>},
     {"compute", "pd/damage", "peridynamic damage", nullptr, &styled_creator<ComputePDDamage>},

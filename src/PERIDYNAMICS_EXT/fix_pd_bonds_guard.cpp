@@ -17,11 +17,14 @@
 
 #include "atom.h"
 #include "error.h"
+#include "modify.h"
+#include "pd_compat.h"
 #include "pd_error.h"
 #include "update.h"
 
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 
 using namespace LAMMPS_NS;
 
@@ -88,13 +91,21 @@ std::string FixPDBonds::blow_up(int i, const char *what, double value)
         break;
       }
   const double est = stable_dt;
+  std::string likely = fmt::format("the time step {:.6g} is {:.3g} times the stable estimate {:.6g} "
+                                   "(reduce it; fix pd/timestep follows the state as it stiffens), or "
+                                   "an impact faster than the model resolves",
+                                   update->dt, est > 0.0 ? update->dt / est : NAN, est);
+  // a relaxation in pseudo time has no time step to blame
+  for (Fix *fix : PDCompat::fixes(modify))
+    if (strcmp(fix->style, "pd/adr") == 0)
+      likely = fmt::format("the relaxation of fix {} (pd/adr) is unstable: its fictitious density is "
+                           "too small for the stiffness now (raise its safety, or lower its every)",
+                           fix->id);
   return fmt::format("Fix pd/bonds: the run is unstable at step {}: atom {} at ({:.6g}, {:.6g}, "
-                     "{:.6g}) has {} {:.6g}{}. {}Likely cause: the time step {:.6g} is {:.3g} times "
-                     "the stable estimate {:.6g} (reduce it; fix pd/timestep follows the state as "
-                     "it stiffens), or an impact faster than the model resolves",
+                     "{:.6g}) has {} {:.6g}{}. {}Likely cause: {}",
                      update->ntimestep, atom->tag[i], x[i][0], x[i][1], x[i][2], what, value,
                      std::isfinite(value) ? fmt::format(" (above {:.3g}: it would move more than half "
                                                         "the horizon in one step)", guard_step / update->dt)
                                           : " (not finite)",
-                     cause, update->dt, est > 0.0 ? update->dt / est : NAN, est);
+                     cause, likely);
 }

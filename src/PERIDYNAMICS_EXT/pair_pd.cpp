@@ -550,7 +550,8 @@ void PairPD::check_minimize()
 {
   if (update->whichflag == 2 && (law->breaks() || history_per_bond()))
     error->all(FLERR, "Pair {}: minimize with bond failure or plasticity is not supported (line "
-               "search trial states would break or yield bonds); use damped dynamics", style_name());
+               "search trial states would break or yield bonds); for quasi-static loading use fix "
+               "pd/adr", style_name());
 }
 
 // What the bonds need of the atoms and of LAMMPS.

@@ -95,6 +95,12 @@ namespace PDCompat {
 #endif
   }
 
+  /* Every fix, in the order they were defined. */
+  inline std::vector<class Fix *> fixes(Modify *modify)
+  {
+    return std::vector<class Fix *>(modify->fix, modify->fix + modify->nfix);
+  }
+
   /* After a change of update->dt: what depends on it, as fix dt/reset does. */
   inline void time_step_changed(class LAMMPS *lmp)
   {

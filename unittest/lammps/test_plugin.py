@@ -29,6 +29,7 @@ check("the plugin registers the package's styles", all(s in out for s in (
     "pair style plugin pd/bond", "pair style plugin pd/ordinary", "pair style plugin pd/contact",
     "pair style plugin pd/corr",
     "fix style plugin pd/bonds", "fix style plugin pd/precrack", "fix style plugin pd/timestep",
+    "fix style plugin pd/adr",
     "compute style plugin pd/damage",
     "compute style plugin pd/atom", "compute style plugin pd/fracture")), out[-600:])
 
