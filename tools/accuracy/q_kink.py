@@ -76,14 +76,15 @@ def mts_angle(ratio):
 def cases(mode):
     """smoke: pure mode II, pd/ordinary energy, a/h = 25 (a few seconds); short:
     pure mode II, square lattice, 3 spacings, a/h = 25 and 50, pd/ordinary
-    energy and pd/bond stretch; full: also 4 spacings, hex, jittered and
-    K_II/K_I = 1 (about 40 s in all)."""
+    energy and pd/bond stretch (about 15 s); full: also a/h = 100 and, at
+    a/h = 25, 4 spacings, hex, three jittered plates and K_II/K_I = 1
+    (about 85 s)."""
     if mode == "smoke":
         return [{"style": "pd/ordinary", "law": "energy", "lattice": "square", "ratio": 3, "n": 25, "mix": "II"}]
     out = []
     laws = (("pd/ordinary", "energy"), ("pd/bond", "stretch"))
     for style, law in laws:
-        for n in (25, 50):
+        for n in ((25, 50) if mode == "short" else (25, 50, 100)):
             out.append({"style": style, "law": law, "lattice": "square", "ratio": 3, "n": n, "mix": "II"})
     if mode == "full":
         for style, law in laws:
