@@ -67,11 +67,12 @@ def write(results, out_dir):
         cost_kind = q.get("cost", "per_particle_step")
         unit = "s per particle-step" if cost_kind == "per_particle_step" else "s (run time)"
         pts = _points(rows, q["primary"], cost_kind)
+        targets = q.get("targets") or pareto.TARGETS     # in the quantity's error unit
         groups = sorted({r.get("group", "") for _, _, r in pts})
         for g in groups:
             label = f"{name} ({g})" if g else name
             gpts = [p for p in pts if p[2].get("group", "") == g]
-            for t in pareto.TARGETS:
+            for t in targets:
                 best = pareto.cheapest(gpts, t)
                 if best:
                     lines.append(f"| {label} | {t:g} | {setting_text(best[2]['case'])} | {best[1]:.3g} | "
@@ -93,7 +94,7 @@ def write(results, out_dir):
                     png = os.path.join(out_dir, plot_name(name, g, kind))
                     plot.error_vs_cost(png, _curves(pk, order), [(c, e) for c, e, _ in pareto.front(pk)],
                                        label, f"{q['primary']} ({q.get('error_unit', 'relative error')})",
-                                       f"{name}{glabel}: {q['title']}", pareto.TARGETS)
+                                       f"{name}{glabel}: {q['title']}", targets)
                     sec += [f"![{name}{glabel}: error against {label}]({os.path.basename(png)})", ""]
                 frontier = pareto.front([p for p in pts if p[2].get("group", "") == g])
                 sec += [f"Pareto front{glabel} ({unit}):", ""]

@@ -12,7 +12,9 @@ when there is no pd_exact binary), and optionally NAME, TITLE, PRIMARY
 (the error metric the report ranks by; defaults: the file's name, the
 docstring's first line, 'err' or PRIMARY below), family(case)
 (the curve of a case), group(case) (recommendations are made per group),
-COST ('per_particle_step', the default, or 'wall') and QUADRATURE (True:
+COST ('per_particle_step', the default, or 'wall'), ERROR_UNIT and
+TARGETS (the target errors of the recommendations, in the error's unit;
+default pareto.TARGETS, relative errors) and QUADRATURE (True:
 the driver adds 'quadrature partial' copies of the cases when the binary
 accepts that pair_style keyword)."""
 import argparse
@@ -30,10 +32,11 @@ import traceback
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import deck      # noqa: E402
+import pareto    # noqa: E402
 import plot      # noqa: E402
 import report    # noqa: E402
 
-ORDER = ["waves", "constants", "fracture", "crack", "riemann"]
+ORDER = ["waves", "constants", "fracture", "crack", "riemann", "kink"]
 # what a module that does not say gets: its name from the file, its title
 # from its docstring's first line, and its error metric
 PRIMARY = {"waves": "phase_error"}
@@ -126,6 +129,7 @@ def main():
         rows = []
         q = {"title": title, "primary": primary, "cost": getattr(mod, "COST", "per_particle_step"),
              "error_unit": getattr(mod, "ERROR_UNIT", "relative error"),
+             "targets": list(getattr(mod, "TARGETS", pareto.TARGETS)),
              "doc": (mod.__doc__ or "").strip(), "rows": rows}
         results["quantities"][name] = q
         for k, case in enumerate(cases):

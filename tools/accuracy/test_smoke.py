@@ -24,7 +24,14 @@ Physics (each with its reason):
   plane (the critical stretch calibrated on the family averaged over
   orientations, <cos+> = 1/pi; 0.960), biased up only by the opening's step
   (each bond breaks at most a factor 1 + r past s0, r = 0.004: energy at
-  most (1 + r)^2 - 1 high)."""
+  most (1 + r)^2 - 1 high).
+- kink, pure mode II: the crack kinks to the side of negative angles (K_II >
+  0: the upper face moves +x), where both the maximum tangential stress
+  (-70.5 deg) and the maximum energy release rate (-75 to -77 deg) criteria
+  put it, by 40 to 90 degrees: a wrong sign in the K-field or the angle
+  kinks it upward, a mode I field not at all. Not its accuracy: on the
+  square lattice paths lock onto the 45 deg diagonal (pd/bond at a/h = 50:
+  -45.7 deg), so the bound leaves that room."""
 import json
 import math
 import os
@@ -51,7 +58,7 @@ print(p.stdout[-4000:], p.stderr[-4000:])
 check("run.py --mode smoke exits 0 (every case measured)", p.returncode == 0, f"exit {p.returncode}")
 res = json.load(open(os.path.join(OUT, "results.json")))
 qs = res["quantities"]
-expected = {"constants", "fracture", "crack", "riemann"}
+expected = {"constants", "fracture", "crack", "riemann", "kink"}
 check("results.json has every quantity", expected <= set(qs), " ".join(sorted(qs)))
 text = open(os.path.join(OUT, "report.md")).read()
 check("report.md has the recommendation table",
@@ -101,6 +108,9 @@ check("fracture along the rows = lattice sum of crossing bonds, up to the openin
 m = row("crack")
 check("crack: both cracks run (speeds above 100 m/s)", min(m["v_rows"], m["v_turned"]) > 100,
       f"{m['v_rows']:.0f} and {m['v_turned']:.0f} m/s")
+m = row("kink")
+check("kink: mode II crack kinks downward by 40-90 degrees (the side of MTS and max G)",
+      -90 < m["theta"] < -40, f"{m['theta']:.1f} deg, MTS {m['theta_mts']:.1f}")
 
 # without gnuplot the report step says what to install
 env = dict(os.environ, PATH=tempfile.mkdtemp(prefix="nognuplot-"))
