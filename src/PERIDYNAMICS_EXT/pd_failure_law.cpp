@@ -84,6 +84,11 @@ int PDFailureLaw::take_keyword(PDCoefLine &line, int k, int narg, char **arg, in
   return iarg;
 }
 
+bool PDFailureLaw::line_keyword(const char *word) const
+{
+  return strcmp(word, "fail") == 0 || strcmp(word, "nobond") == 0 || pair->coef_index(word) >= 0;
+}
+
 int PDFailureLaw::fail_column() const
 {
   return pair->ifail;

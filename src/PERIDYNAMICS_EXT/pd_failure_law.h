@@ -133,6 +133,8 @@ class PDFailureLaw : protected Pointers {
   void take(PDCoefLine &line, int k, const char *text) const;
   // 'Gc <Gc>' at arg[iarg], if it is there: returns the next iarg
   int take_keyword(PDCoefLine &line, int k, int narg, char **arg, int iarg) const;
+  // a word that starts the next keyword/value pair of a pair_coeff line
+  bool line_keyword(const char *word) const;
   int fail_column() const;   // the laws' columns follow it
   const char *column_name(int p) const;
   std::string usages_of(int p) const;   // the laws that take column p, for messages

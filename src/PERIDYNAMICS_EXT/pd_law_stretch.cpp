@@ -40,11 +40,13 @@ class LawStretch : public PDFailureLaw {
   {
     const int next = take_keyword(line, GC, narg, arg, iarg);
     if (next != iarg) return next;
-    if (iarg < narg && utils::is_double(arg[iarg])) {
-      take(line, S0, arg[iarg]);
-      return iarg + 1;
-    }
-    return iarg;
+    if (iarg >= narg || line_keyword(arg[iarg])) return iarg;
+    // the word after 'fail stretch' that is no keyword is meant as s0
+    if (!utils::is_double(arg[iarg]))
+      error->all(FLERR, "Pair {} coeff: 'fail stretch' takes a critical stretch s0, got '{}' ({})", style(),
+                 arg[iarg], usage());
+    take(line, S0, arg[iarg]);
+    return iarg + 1;
   }
 
   // an s0 on the line decides the critical stretch: a material file's G_c
