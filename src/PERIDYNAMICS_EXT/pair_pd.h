@@ -236,6 +236,7 @@ class PairPD : public Pair, public PDFamilySource {
   // its own family's sums and its calibrated weighted volume (per-atom
   // fields of the bond store, migrating with the atoms)
   void calibrate_families();
+  std::vector<bool> lattice_types() const;    // per type: its atoms sit on a lattice
   // each type's median of q over the owned atoms that take selects (NaN: none)
   std::vector<double> type_medians(const double *q, const std::function<bool(int)> &take) const;
   // every atom's calibrated weighted volume is its type's complete one

@@ -17,6 +17,7 @@
 #include <mpi.h>
 
 extern "C" {
+#include "pd_bonds.h"
 #include "pd_calibration.h"
 }
 
@@ -69,28 +70,48 @@ std::vector<double> PairPD::type_medians(const double *q, const std::function<bo
   return median;
 }
 
+// Types on a lattice: at least two atoms share the largest first moment
+// sum w V |xi| to round-off (the interior ones). Jittered particles of
+// equal volumes may share a family volume (a count of partners), but not
+// that moment.
+std::vector<bool> PairPD::lattice_types() const
+{
+  const int n = atom->ntypes + 1;
+  std::vector<double> moment(atom->nlocal + atom->nghost, 0.0);
+  const pd_bond_view view = bonds->view();
+  pd_family_moment(&view, atom->vfrac, 1, moment.data());
+  bonds->sum_to_owners(moment.data());
+  std::vector<double> largest(n, 0.0), at_largest(n, 0.0);
+  for (int i = 0; i < atom->nlocal; i++) largest[atom->type[i]] = MAX(largest[atom->type[i]], moment[i]);
+  MPI_Allreduce(MPI_IN_PLACE, largest.data(), n, MPI_DOUBLE, MPI_MAX, world);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (moment[i] >= (1.0 - 1e-12) * largest[atom->type[i]]) at_largest[atom->type[i]] += 1.0;
+  MPI_Allreduce(MPI_IN_PLACE, at_largest.data(), n, MPI_DOUBLE, MPI_SUM, world);
+  std::vector<bool> lattice(n);
+  for (int t = 0; t < n; t++) lattice[t] = at_largest[t] >= 2.0;
+  return lattice;
+}
+
 // The interior family volume of each type and the tolerance of its
-// scatter. On a lattice the interior atoms share the largest family volume
-// (to round-off): it is the interior one, and nothing scatters. Otherwise
-// (an irregular arrangement, where the largest is an outlier) the median
-// over the atoms within the window of the largest, then again within the
-// window of that median, and the robust scatter about it. Then each atom's
-// share of its own sums and its calibrated weighted volume.
+// scatter. On a lattice it is the largest family volume (the interior
+// atoms'), and nothing scatters. Otherwise (an irregular arrangement, where
+// the largest is an outlier) the median over the atoms within the window
+// of the largest, then again within the window of that median, and the
+// robust scatter about it. Then each atom's share of its own sums and its
+// calibrated weighted volume.
 void PairPD::calibrate_families()
 {
   const double *v = bonds->family_volume();
   const int n = atom->ntypes + 1;
-  std::vector<double> largest(n, 0.0), at_largest(n, 0.0);
+  const std::vector<bool> lattice = lattice_types();
+  std::vector<double> largest(n, 0.0);
   for (int i = 0; i < atom->nlocal; i++) largest[atom->type[i]] = MAX(largest[atom->type[i]], v[i]);
   MPI_Allreduce(MPI_IN_PLACE, largest.data(), n, MPI_DOUBLE, MPI_MAX, world);
-  for (int i = 0; i < atom->nlocal; i++)
-    if (v[i] >= (1.0 - 1e-12) * largest[atom->type[i]]) at_largest[atom->type[i]] += 1.0;
-  MPI_Allreduce(MPI_IN_PLACE, at_largest.data(), n, MPI_DOUBLE, MPI_SUM, world);
   std::vector<double> interior = largest, ref;
   // (a lattice's types need no median)
   const auto candidate = [&](int i) {
     const int t = atom->type[i];
-    return at_largest[t] < 2.0 && v[i] >= (1.0 - PD_CALIBRATION_WINDOW) * ref[t];
+    return !lattice[t] && v[i] >= (1.0 - PD_CALIBRATION_WINDOW) * ref[t];
   };
   for (int pass = 0; pass < 2; pass++) {
     ref = interior;
@@ -102,9 +123,8 @@ void PairPD::calibrate_families()
   const std::vector<double> mad = type_medians(deviation.data(), candidate);
   family_tolerance.assign(n, 0.0);
   for (int t = 1; t < n; t++) {
-    const bool lattice = at_largest[t] >= 2.0;
-    if (lattice) interior[t] = largest[t];
-    const double scatter = lattice || !(interior[t] > 0.0) ? 0.0 : 1.4826 * mad[t] / interior[t];
+    if (lattice[t]) interior[t] = largest[t];
+    const double scatter = lattice[t] || !(interior[t] > 0.0) ? 0.0 : 1.4826 * mad[t] / interior[t];
     family_tolerance[t] = pd_calibration_tolerance(scatter);
   }
   double *share = bonds->field(field_index("family_share"));
@@ -125,7 +145,7 @@ void PairPD::calibrate_families()
   std::string types;
   for (int t = 1; t < n; t++) {
     if (kinds[3 * t] + kinds[3 * t + 1] + kinds[3 * t + 2] == 0.0 || !(interior[t] > 0.0)) continue;
-    const std::string arrangement = at_largest[t] >= 2.0
+    const std::string arrangement = lattice[t]
         ? "lattice"
         : fmt::format("irregular, tolerance {:.1f}% of the interior family volume", 100.0 * family_tolerance[t]);
     types += fmt::format(" type {} ({}): {:.0f} atoms on their own family, {:.0f} blended, {:.0f} on the "
