@@ -49,7 +49,7 @@ def write(results, out_dir):
     plot.gnuplot()
     qs = results["quantities"]
     lines = [f"# Accuracy against cost: {results['mode']} mode", "",
-             f"Binary: `{results['lmp']}`; {results['date']}; one MPI rank on a machine shared with other "
+             f"{results.get('lammps', 'LAMMPS')} with this package; {results['date']}; one MPI rank on a machine shared with other "
              "jobs (times are as measured, noisy to some 10-30%).", "",
              "Quadrature: `quadrature partial` is " +
              (f"swept for {', '.join(results['quadrature_partial'])}" if results.get("quadrature_partial")

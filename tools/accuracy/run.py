@@ -24,6 +24,8 @@ import importlib
 import inspect
 import json
 import os
+import re
+import subprocess
 import sys
 import tempfile
 import time
@@ -86,6 +88,17 @@ def write_csv(path, rows):
             w.writerow([r["case"].get(k, "") for k in ckeys] + [m.get(k, "") for k in mkeys] + [r.get("error", "")])
 
 
+def lammps_version(lmp):
+    """'LAMMPS (29 Sep 2021 - Update 2)' from the binary's help text: the
+    report names the release, not a path of the machine it ran on."""
+    try:
+        out = subprocess.run([lmp, "-h"], capture_output=True, text=True, timeout=60, env=deck.ENV).stdout
+    except (OSError, subprocess.TimeoutExpired):
+        return "LAMMPS"
+    m = re.search(r"Simulator\s*-\s*(.+?)\s*$", out, re.M)
+    return f"LAMMPS ({m.group(1)})" if m else "LAMMPS"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--mode", choices=("smoke", "short", "full"), default="smoke")
@@ -107,7 +120,8 @@ def main():
         sys.exit(f"accuracy: no LAMMPS binary at {lmp} (give --lmp or PDEXT_LMP)")
     plot.gnuplot()          # fail before hours of runs, not after
     t0 = time.time()
-    results = {"mode": a.mode, "lmp": lmp, "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+    results = {"mode": a.mode, "lmp": lmp, "lammps": lammps_version(lmp),
+               "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
                "quantities": {}, "skipped": {}}
     partial = partial_quadrature(lmp)
     results["quadrature_partial"] = partial
