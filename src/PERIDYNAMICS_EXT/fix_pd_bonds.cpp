@@ -261,9 +261,12 @@ void FixPDBonds::map_partners(bool setup, bool built)
   // past it before the next reneighboring: its closest image is then
   // another one, and the bond jumps there
   double ambiguous[3];
+  // (a lattice bond exactly there is not warned about; a 2D model's bonds
+  // lie in the plane, whatever the thin periodic z period and the skin)
   for (int c = 0; c < 3; c++)
-    ambiguous[c] = domain->periodicity[c] ? (0.5 * domain->prd[c] - 0.5 * neighbor->skin) * (1.0 + 1e-9)
-                                          : INFINITY;    // (a lattice bond exactly there is not warned about)
+    ambiguous[c] = domain->periodicity[c] && c < domain->dimension
+        ? (0.5 * domain->prd[c] - 0.5 * neighbor->skin) * (1.0 + 1e-9)
+        : INFINITY;
   bigint nambiguous = 0;
   for (int i = 0; i < nowned; i++) {
     for (int k = 0; k < npartner[i]; k++) {

@@ -52,6 +52,12 @@ check("bonds within half the skin of half the periodic box: a WARNING with their
       re.search(r"WARNING: Fix pd/bonds: at step 0 \d+ bonds span nearly half the periodic box", out) is not None)
 out, _ = run(block(8) + PAIRS["pd/ordinary"] + "run 0\n", d)
 check("... none in a box of 8 spacings", "span nearly half the periodic box" not in out)
+# a 2D plate as the docs lay it out: z periodic and one spacing thick, the
+# default skin (1 mm in SI) larger than that period; its bonds lie in the plane
+out, _ = run(plate(12) + f"pair_style pd/ordinary plane stress thickness 1e-3\n"
+             f"pair_coeff * * E 1e9 nu 0.25 horizon {H}\nrun 0\n", d)
+check("a 2D plate one spacing thick in a periodic z: no warning about half the box",
+      "pd/bonds: bonds per atom" in out and "span nearly half the periodic box" not in out)
 
 # --- pair_style none between runs -----------------------------------------
 MOVE = ROUGH_VELOCITY + "fix 1 all nve\ntimestep 1e-8\ncompute dmg all pd/damage\n" \
