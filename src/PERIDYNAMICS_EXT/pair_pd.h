@@ -89,6 +89,9 @@ class PairPD : public Pair, public PDFamilySource {
   // place as the weighted volume is; returns the type's complete-family
   // value it blends with
   std::vector<double> calibrate(double *q) const;
+  // each atom's reference family moment sum w V |xi|^power (owned atoms;
+  // core/pd_calibration.h pd_family_moment), for a calibration
+  std::vector<double> family_moments(int power) const;
   // 'quadrature partial': each bond weighted by the share of its partner's
   // cell inside the horizon (core/pd_quadrature.h)
   bool partial_volumes() const { return quadrature == QUADRATURE_PARTIAL; }

@@ -16,7 +16,6 @@
 
 extern "C" {
 #include "pd_bond_based.h"
-#include "pd_calibration.h"
 #include "pd_params.h"
 #include "pd_tangent.h"
 #include "pd_timestep.h"
@@ -111,10 +110,7 @@ void PairPDBond::fracture_elastic(int i, int j, double &E, double &nu) const
 void PairPDBond::setup_run()
 {
   const int n = atom->ntypes + 1;
-  std::vector<double> moment(atom->nlocal + atom->nghost, 0.0);
-  const pd_bond_view v = bonds->view();
-  pd_family_moment(&v, atom->vfrac, 1, moment.data());
-  bonds->sum_to_owners(moment.data());
+  std::vector<double> moment = family_moments(1);
   const std::vector<double> complete = calibrate(moment.data());
   kappa.assign(n, 1.0);
   for (int t = 1; t < n; t++) {

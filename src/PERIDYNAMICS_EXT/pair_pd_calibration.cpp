@@ -77,10 +77,7 @@ std::vector<double> PairPD::type_medians(const double *q, const std::function<bo
 std::vector<bool> PairPD::lattice_types() const
 {
   const int n = atom->ntypes + 1;
-  std::vector<double> moment(atom->nlocal + atom->nghost, 0.0);
-  const pd_bond_view view = bonds->view();
-  pd_family_moment(&view, atom->vfrac, 1, moment.data());
-  bonds->sum_to_owners(moment.data());
+  const std::vector<double> moment = family_moments(1);
   std::vector<double> largest(n, 0.0), at_largest(n, 0.0);
   for (int i = 0; i < atom->nlocal; i++) largest[atom->type[i]] = MAX(largest[atom->type[i]], moment[i]);
   MPI_Allreduce(MPI_IN_PLACE, largest.data(), n, MPI_DOUBLE, MPI_MAX, world);
@@ -183,6 +180,15 @@ bool PairPD::calibration_uniform() const
   for (int i = 0; i < atom->nlocal && mine; i++) mine = m[i] == calibrated_reference[atom->type[i]];
   MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, world);
   return all != 0;
+}
+
+std::vector<double> PairPD::family_moments(int power) const
+{
+  std::vector<double> moment(atom->nlocal + atom->nghost, 0.0);
+  const pd_bond_view view = bonds->view();
+  pd_family_moment(&view, atom->vfrac, power, moment.data());
+  bonds->sum_to_owners(moment.data());
+  return moment;
 }
 
 double PairPD::calibrated_volume(int i) const

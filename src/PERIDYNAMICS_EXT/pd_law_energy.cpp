@@ -17,7 +17,6 @@
 #include <cmath>
 
 extern "C" {
-#include "pd_calibration.h"
 #include "pd_law_energy.h"
 #include "pd_orientation.h"
 }
@@ -92,11 +91,7 @@ class LawEnergy : public PDFailureLaw {
     // ... and beta is calibrated on each atom's family: its moment
     // sum w V / |xi| and weighted volume, calibrated as the material's
     // (core/pd_calibration.h)
-    const int nall = atom->nlocal + atom->nghost;
-    std::vector<double> sum(nall, 0.0);
-    const pd_bond_view v = bonds()->view();
-    pd_family_moment(&v, atom->vfrac, -1, sum.data());
-    bonds()->sum_to_owners(sum.data());
+    std::vector<double> sum = pair->family_moments(-1);
     const std::vector<double> moment = pair->calibrate(sum.data());
     double *b = field(BETA);
     for (int i = 0; i < atom->nlocal; i++)

@@ -7,13 +7,11 @@
 
 #include "atom.h"
 #include "error.h"
-#include "fix_pd_bonds.h"
 #include "pair_pd.h"
 
 #include <cmath>
 
 extern "C" {
-#include "pd_calibration.h"
 #include "pd_law_stretch.h"
 #include "pd_orientation.h"
 }
@@ -101,10 +99,7 @@ class LawStretch : public PDFailureLaw {
     const int n = atom->ntypes + 1;
     factor.assign(n, 1.0);
     if (pair->bond_based() && !legacy_mode()) {
-      std::vector<double> moment(atom->nlocal + atom->nghost, 0.0);
-      const pd_bond_view v = bonds()->view();
-      pd_family_moment(&v, atom->vfrac, 2, moment.data());
-      bonds()->sum_to_owners(moment.data());
+      std::vector<double> moment = pair->family_moments(2);
       const std::vector<double> complete = pair->calibrate(moment.data());
       for (int t = 1; t < n; t++)
         factor[t] = pd_critical_stretch_factor(dim(), pair->horizon(t, t), pair->plate_thickness(),
