@@ -244,7 +244,7 @@ static void limits(void)
   check_rel("pd_lattice_expected_error: PMB sc 3h, dilatation (+12.1%)", one.dilatation, pmb3.dilatation, 1e-12);
 
   /* 2D plane stress, square, constant influence (the 2D default): shears
-   * +-6.3% (issue 12's measurement), speeds along x +1.0%, -3.2% */
+   * +-6.3% (as measured on strained blocks), speeds along x +1.0%, -3.2% */
   iw.kind = PD_INFLUENCE_CONSTANT, iw.dim = 2;
   pd_lattice_family(&sq, d3, 1.0, pd_influence_weight_fn, &iw, &f);
   m = pd_linear_ordinary(PD_PLANE_STRESS, &e2, &f);

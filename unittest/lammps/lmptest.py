@@ -108,7 +108,7 @@ def finish():
     sys.exit(1 if _counts["fail"] else 0)
 
 
-# The benchmark and parity block (issue 2): simple cubic, spacing 5e-4,
+# The benchmark and parity block: simple cubic, spacing 5e-4,
 # horizon 3 spacings, K = 14.9 GPa, density 2200, volume 1.25e-10.
 SPACING, HORIZON, BULK, DENSITY, VOLUME = 0.0005, 0.0015001, 14.9e9, 2200.0, 1.25e-10
 MICROMODULUS = 18 * BULK / (math.pi * HORIZON ** 4)

@@ -1,4 +1,4 @@
-"""Bad input gets a LAMMPS ERROR line that names what is wrong (issue 2),
+"""Bad input gets a LAMMPS ERROR line that names what is wrong,
 never a crash, a NaN or a silent default."""
 from lmptest import *
 import os
@@ -128,7 +128,7 @@ cases = [
      f"pair_style pd/bond legacy\npair_coeff * * pmb K 1e9 horizon {H}\n" + RUN, "need the lattice spacing"),
 ]
 
-# Issue 9: every numeric input finite and in range, every key a line cannot
+# Every numeric input finite and in range, every key a line cannot
 # use refused, material files checked, messages that say what is wrong.
 open(f"{d}/inf.pd", "w").write("material glass\n  density 2500\n  E inf\n  nu 0.2\nend\n")
 open(f"{d}/twice.pd", "w").write("material glass\n  density 2500\n  E 7e10\n  nu 0.2\n  E 7e10\nend\n")

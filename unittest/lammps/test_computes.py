@@ -1,4 +1,4 @@
-"""compute pd/atom and pd/damage (issue 2).
+"""compute pd/atom and pd/damage.
 
 A uniform dilatation s of the periodic block stretches every bond by exactly
 s, so the dilatation is 3 s at every atom and the energy density K theta^2/2
@@ -6,7 +6,7 @@ s, so the dilatation is 3 s at every atom and the energy density K theta^2/2
 one atom takes one partner of equal volume from each of its 122 neighbors:
 their damage is 1/122 exactly, and the lost partners are counted.
 
-Declared per-atom fields (issue 10): compute pd/atom lists the bond store's
+Declared per-atom fields: compute pd/atom lists the bond store's
 fields by name. The weighted volume of an atom of the periodic block is the
 lattice sum of its family, and the dissipated energy per atom sums to
 compute pd/fracture's total. The store's migrate+restart fields keep their

@@ -1,4 +1,4 @@
-"""Conservation (issue 2): linear momentum to round-off and no energy drift
+"""Conservation: linear momentum to round-off and no energy drift
 for an elastic vibration, 2000 steps at half the stable time step.
 
 Velocity Verlet does not conserve KE + PE exactly: for a linear system it

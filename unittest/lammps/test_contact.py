@@ -1,4 +1,4 @@
-"""Short-range contact (issue 5, first part): two elastic blocks that were
+"""Short-range contact: two elastic blocks that were
 never bonded (their gap exceeds the horizon) collide at 2 x 20 m/s.
 
 pd/contact (hybrid/overlay with pd/ordinary) pushes particles closer than

@@ -1,4 +1,4 @@
-"""pd/contact's short list and cached candidates (issue 13).
+"""pd/contact's short list and cached candidates.
 
 pd/contact takes its candidates (pairs that may touch, with their contact
 distances) when LAMMPS reneighbors, and visits at each step only a short

@@ -1,4 +1,4 @@
-"""Edge-on impact (issue 4, T14 6.2.1): the example deck
+"""Edge-on impact (T14 6.2.1): the example deck
 examples/edge-on-impact/in.edge-on at reduced resolution.
 
 A 20 mm aluminium square strikes a 100 x 100 mm PMMA plate (plane stress,

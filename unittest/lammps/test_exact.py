@@ -1,5 +1,5 @@
 """LAMMPS against the exact solution of the linearized lattice equation
-(tools/pd_exact, issue 12; EW06 section 3).
+(tools/pd_exact; EW06 section 3).
 
 1. The tool against a hand-derived single mode: a chain with PMB bonds
    p = 1..3 spacings, v0 = sin(k x): u(t) = sin(k x) sin(w t)/w with

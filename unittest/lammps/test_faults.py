@@ -1,4 +1,4 @@
-"""Faults end in a clear ERROR (issue 9), not NaN, a crash or a lost message.
+"""Faults end in a clear ERROR, not NaN, a crash or a lost message.
 
 - Blow-ups: at 5x and 50x the stable step the guard stops the run within a
   few steps with an ERROR that names an atom, its position and the time

@@ -1,4 +1,4 @@
-"""Fracture (issue 4): T14's energy failure law in a pre-cracked 2D strip.
+"""Fracture: T14's energy failure law in a pre-cracked 2D strip.
 
 A PMMA strip (plane stress, E = 3.5 GPa, nu = 0.35, G_c = 400 J/m^2) 60 mm
 x 20 mm, pre-cracked from the left edge to 15 mm on its mid-line

@@ -1,4 +1,4 @@
-"""Interface fracture energy (issue 9): 'fail stretch Gc' and 'fail energy
+"""Interface fracture energy: 'fail stretch Gc' and 'fail energy
 Gc' on a line between two types give the bonds between them their own G_c.
 
 Two halves of one material (types 1 below, 2 above a plane along the
@@ -11,7 +11,7 @@ only the bonds that cross the plane stretch and break. Three runs each:
 B must release exactly what A releases (same bonds, same critical values:
 the pair's G_c, not the bulk's), and about G_int per unit area: within
 -25%/+35%, the lattice calibration being exact only on average over crack
-orientations (issue 12 measured 0.91-1.15 for a plane along the lattice)
+orientations (0.91-1.15 measured for a plane along the lattice)
 plus the overshoot of the finite increments. C releases about 10 times
 more (the bulk's). For 3D and 2D (plane stress and strain), both laws and
 the influence functions the energy law allows in 2D."""

@@ -1,5 +1,5 @@
 """The bond loops' two ways give the same forces, energy and virial, to
-the bit (issue 13).
+the bit.
 
 A row of bonds goes either through the vectorized first pass and the
 scalar scatter, or bond by bond: on steps that tally per-atom energy, and

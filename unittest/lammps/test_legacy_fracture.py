@@ -1,4 +1,4 @@
-"""Parity with legacy PERI on a scene that breaks (issue 5): LAMMPS's own
+"""Parity with legacy PERI on a scene that breaks: LAMMPS's own
 examples/peri decks (a sphere at 100 m/s shattering a cylinder, 3487
 particles), run with peri/pmb and peri/lps and with
 'pair_style hybrid/overlay pd/bond|pd/ordinary legacy pd/contact legacy'

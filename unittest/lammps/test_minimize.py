@@ -1,4 +1,4 @@
-"""Quasi-static bar (issue 3): 'minimize' solves a bar stretched by 0.1%
+"""Quasi-static bar: 'minimize' solves a bar stretched by 0.1%
 between two grips (3 layers each, held by fix setforce); Young's modulus is
 the grip force over the cross-section divided by the strain between two
 interior sections, 10 spacings apart.

@@ -1,4 +1,4 @@
-"""Rank-count invariance (issue 2): 1, 2 and 4 MPI ranks give the same final
+"""Rank-count invariance: 1, 2 and 4 MPI ranks give the same final
 positions to 1e-10 relative. Atoms come from one data file (IDs from
 create_atoms depend on the rank count); a drift of 200 m/s carries them
 across subdomains (exchange of atoms with their bonds) while bonds span

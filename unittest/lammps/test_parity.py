@@ -1,4 +1,4 @@
-"""Parity with legacy PERI in one binary (issue 2): the same block, the same
+"""Parity with legacy PERI in one binary: the same block, the same
 velocities, 200 steps of fix nve; final positions must agree to 1e-10
 relative (the two sum the same terms in a different order: round-off only,
 amplified little over 200 stable steps of a linear system)."""

@@ -1,4 +1,4 @@
-"""The package as a plugin (issue 10): a plain LAMMPS (PLUGIN and PERI
+"""The package as a plugin: a plain LAMMPS (PLUGIN and PERI
 packages, shared library, none of our styles compiled in) runs our styles
 after 'plugin load pdext.so'.
 

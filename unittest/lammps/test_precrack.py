@@ -1,4 +1,4 @@
-"""Pre-cracks (issue 4): fix pd/precrack breaks exactly the bonds whose
+"""Pre-cracks: fix pd/precrack breaks exactly the bonds whose
 reference segment crosses the crack, on any rank count, and they stay
 broken across a restart.
 

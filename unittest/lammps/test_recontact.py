@@ -1,4 +1,4 @@
-"""Crack faces push only when they touch (issue 9).
+"""Crack faces push only when they touch.
 
 A PMMA plate (plane stress, spacing 1 mm, horizon 4 mm), periodic along x,
 is cut across its mid-line by fix pd/precrack. Broken bonds resist

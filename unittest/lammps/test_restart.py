@@ -1,4 +1,4 @@
-"""Restart continuation (issue 2): 'run 100' twice in one process, and
+"""Restart continuation: 'run 100' twice in one process, and
 'run 100', write_restart, a new process, read_restart, 'run 100', end at
 bitwise the same positions on the same rank count. No lattice command and
 no pair_style after the restart: the pair style, its coefficients, the

@@ -1,4 +1,4 @@
-"""Nothing silent (issue 9): set-ups that used to run quietly wrong.
+"""Nothing silent: set-ups that used to run quietly wrong.
 
 - Bonds per atom are reported per type; a type without bonds (a horizon
   below the real spacing: wrong lattice, volume or units) is an ERROR; two

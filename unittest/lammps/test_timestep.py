@@ -1,4 +1,4 @@
-"""fix pd/timestep (issue 14): the adaptive stable time step.
+"""fix pd/timestep: the adaptive stable time step.
 
 A free 10^3 block of the nonlinear solid m = -1 is given a uniform inward
 velocity: it compresses by about 15%, stiffens (its bonds' tangent grows like

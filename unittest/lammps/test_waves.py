@@ -1,4 +1,4 @@
-"""Long-wavelength longitudinal waves (issue 3) travel at the classical
+"""Long-wavelength longitudinal waves travel at the classical
 speed: sqrt((lambda + 2 mu) / rho) in 3D and plane strain, sqrt(E / (rho
 (1 - nu^2))) in plane stress, within 2%.
 

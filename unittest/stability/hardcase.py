@@ -1,4 +1,4 @@
-"""The checks every hard case of the stability suite (issue 14) makes, and
+"""The checks every hard case of the stability suite makes, and
 how it runs: reduced in make test, full (PDEXT_VALIDATE=1) in make validate.
 
 A scene is an input deck that defines v_etot (kinetic + elastic +

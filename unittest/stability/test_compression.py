@@ -1,4 +1,4 @@
-"""Hard case 4 (issue 14): uniform compression to 30% of the volume
+"""Hard case 4: uniform compression to 30% of the volume
 (in.compression). A periodic PMMA block, pd/ordinary with m = -1 and
 m = 0, in 2D (plane strain) and 3D, is squeezed equally along every axis
 by fix deform in tc = 20 us and then held (12 and 10 particles per side,

@@ -1,4 +1,4 @@
-"""Hard case 1 (issue 14): the peridynamic Riemann problem of T14 5.3
+"""Hard case 1: the peridynamic Riemann problem of T14 5.3
 (examples/riemann-2d: two halves of a 2D bar meet, m = 0) at 1200 and
 2000 m/s, up to the same simulated time at the example's fixed step
 (2e-7 s, 0.06 of the setup estimate) and at 0.8 of the setup estimate and with fix pd/timestep. The fixed

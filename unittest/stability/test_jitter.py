@@ -1,4 +1,4 @@
-"""Hard case 6 (issue 14): an irregular arrangement under impact. The plate
+"""Hard case 6: an irregular arrangement under impact. The plate
 of in.wall with every particle moved by up to 0.25 spacings at random and
 its volume varied by -30% .. +30% (so its stiffness sums, stable steps and
 contact radii all differ), into the wall at 1000 m/s. The setup estimate

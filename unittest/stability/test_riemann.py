@@ -1,4 +1,4 @@
-"""Stability (issue 5): the peridynamic Riemann problem of T14 5.3 at T14's
+"""Stability: the peridynamic Riemann problem of T14 5.3 at T14's
 resolution (20,000 particles, 5 spacings per horizon), 100 microseconds.
 
 T14's finding, both sides: the linear solid (m = 1/2) lets the two halves

@@ -1,4 +1,4 @@
-"""Hard case 3 (issue 14): a steel sphere (radius 3 mm) into an aluminium
+"""Hard case 3: a steel sphere (radius 3 mm) into an aluminium
 plate (20 x 20 x 3 mm) at 3000 m/s, 3D (in.sphere, after
 examples/plate-perforation). The sphere perforates the plate and leaves
 at about 1600 (1 mm spacing) to 1900 m/s (0.5 mm); nearly every bond of

@@ -1,4 +1,4 @@
-"""Hard case 5 (issue 14): a stiff impactor on a soft target, 2D plane
+"""Hard case 5: a stiff impactor on a soft target, 2D plane
 stress (in.steel_pmma, after examples/edge-on-impact): a 6 x 6 mm steel
 block (E 200 GPa, rho 7800) strikes the edge of a 30 x 30 mm PMMA plate
 (E 3.5 GPa, rho 1180: a stiffness ratio of 57) at 300 m/s and crushes it,

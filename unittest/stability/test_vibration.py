@@ -1,4 +1,4 @@
-"""Hard case 7 (issue 14): a long elastic vibration (in.vibration). A
+"""Hard case 7: a long elastic vibration (in.vibration). A
 periodic 2D PMMA plate of 16 x 16 particles (plane stress) vibrates in two
 standing waves of the box's longest wavelength, 10 m/s each (strains of
 about 1%), with a little energy in every other mode, for 10^4 steps

@@ -1,4 +1,4 @@
-"""Hard case 2 (issue 14): a 2D PMMA plate into a rigid wall at 2000 m/s,
+"""Hard case 2: a 2D PMMA plate into a rigid wall at 2000 m/s,
 m = 0, bonds failing by energy, stiff contact (in.wall). At a fixed step
 it blows up: at 2e-8 s (0.089 of the setup estimate, the step the
 package was first tried with on this scene) and at half that. With fix
