@@ -120,7 +120,7 @@ void PairPD::report_accuracy(const PDFamilySpec &spec)
                      style_name(), t, where, ratio, quad, percent(err.dilatation), percent(err.shear_xx_yy),
                      percent(err.shear_xy));
     }
-    const int release = law->release_kind(t, linear && (kind == PD_LINEAR_PMB || kind == PD_LINEAR_PMB_FAMILY));
+    const int release = law->release_kind(t);
     pd_family f;
     if (release < 0 || pd_lattice_family(&lat, spec.reach(t, t), thickness, store_weight, &rule, &f) < 1)
       continue;

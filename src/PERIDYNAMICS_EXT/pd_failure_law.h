@@ -118,7 +118,7 @@ class PDFailureLaw : protected Pointers {
   // energy a crack releases through type t under this law, as a share of
   // its G_c; -1: none (no G_c, or the energy of a broken bond depends on
   // more than its geometry)
-  virtual int release_kind(int /*t*/, bool /*bond_based_material*/) const { return -1; }
+  virtual int release_kind(int /*t*/) const { return -1; }
 
  protected:
   PairPD *pair;

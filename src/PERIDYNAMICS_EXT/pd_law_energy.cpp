@@ -124,7 +124,7 @@ class LawEnergy : public PDFailureLaw {
   }
 
   // calibrated on the family's orientation average (pd_energy_failure_beta_lattice)
-  int release_kind(int t, bool) const override
+  int release_kind(int t) const override
   {
     const int n = atom->ntypes + 1;
     return std::isfinite(gc[t * n + t]) ? PD_RELEASE_ENERGY_LAW : -1;

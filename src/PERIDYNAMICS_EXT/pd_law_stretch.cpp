@@ -82,9 +82,9 @@ class LawStretch : public PDFailureLaw {
 
   // a bond-based material's bonds, broken at the critical stretch of its G_c
   // calibrated on the family
-  int release_kind(int t, bool bond_based) const override
+  int release_kind(int t) const override
   {
-    return bond_based && given(GC, t, t) && pair->bond_based() && !legacy_mode() ? PD_RELEASE_BOND_BASED : -1;
+    return given(GC, t, t) && pair->bond_based() && !legacy_mode() ? PD_RELEASE_BOND_BASED : -1;
   }
 
   // Per run: a bond-based solid's critical stretch from G_c calibrated on
