@@ -270,7 +270,10 @@ void FixPDBonds::build_families()
     g.vi = vol[i];
     g.vj = vol[j];
     g.horizon = spec.horizon(type[i], type[j]);
-    return spec.is_bond(g);
+    // a weight of zero (tupek's influence at the horizon, a partial cell
+    // beyond it) is no bond: it would carry nothing, and a failure law
+    // would see its zero threshold reached and "break" it at once
+    return spec.is_bond(g) && (!use_weights || spec.bond_weight(g) > 0.0);
   };
 
   // the squared reach of each type pair, with the round-off margin of the

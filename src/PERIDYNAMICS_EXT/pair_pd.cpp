@@ -21,6 +21,7 @@
 #include "update.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -371,6 +372,9 @@ void PairPD::check_value(const pd_coef &c, int p, int i, int j)
 {
   const double v = value(p, i, j);
   if (!given(p, i, j) || pd_coef_valid(&c, v)) return;
+  if (c.check == PD_CHECK_POSITIVE && v > 0.0)
+    error->all(FLERR, "Pair {} coeff {} {}: {} = {} is below the smallest normal number ({}): "
+               "check its magnitude and units", style_name(), i, j, describe(c), v, DBL_MIN);
   if (c.check == PD_CHECK_POSITIVE)
     error->all(FLERR, "Pair {} coeff {} {}: {} must be positive, got {}", style_name(), i, j, describe(c), v);
   error->all(FLERR, "Pair {} coeff {} {}: {} = {} is outside [{}, {}]", style_name(), i, j, describe(c), v,
@@ -731,7 +735,7 @@ void PairPD::check_failure(int i, int j)
 void PairPD::check_derived(int p, int i, int j)
 {
   const double v = value(p, i, j);
-  if (!std::isnan(v) && !(v > 0.0 && std::isfinite(v)))
+  if (!std::isnan(v) && !(v >= DBL_MIN && std::isfinite(v)))
     error->all(FLERR, "Pair {} coeff {} {}: the inputs give {} = {}, not a positive finite number; "
                "check the magnitudes and units of the constants", style_name(), i, j, decl[p].name, v);
 }
@@ -1068,7 +1072,9 @@ void PairPD::report_setup()
   bonds->note_stable_dt(dt);    // for the blow-up guard's message
   if (comm->me == 0) {
     std::string hs;
-    for (int i = 1; i <= atom->ntypes; i++) hs += fmt::format(" {:.6g}", horizon(i, i));
+    // the types of this style only (under hybrid the others have no horizon here)
+    for (int i = 1; i <= atom->ntypes; i++)
+      if (setflag[i][i]) hs += fmt::format(" {:.6g}", horizon(i, i));
     const char *dims[] = {"3D", "2D plane stress", "2D plane strain"};
     const char *quad = legacy ? "PERI's partial volumes (legacy PERI mode)"
         : partial_volumes() ? "partial volumes (each cell's share inside the horizon, Seleson 2014)"

@@ -134,6 +134,24 @@ void PairPDCorr::check_coeff(int i, int j)
   need(PD_CORR_T_MELT, heats);
   need(PD_CORR_HEAT_CAPACITY, heats);
   need(PD_CORR_D1, damages);
+  // the options of heating and damage have defaults, so they count as given
+  // here: one changed from its default without the constant that switches
+  // its effect on would be silently unused
+  auto option_of = [&](int first, int last, bool on, const char *needs) {
+    for (int p = first; p <= last; p++)
+      if (!on && coef[p][i][j] != decl[p].value)
+        error->all(FLERR, "Pair pd/corr coeff {} {}: {} ({}) is used only with {}", i, j, decl[p].name,
+                   decl[p].what, needs);
+  };
+  option_of(PD_CORR_T_ROOM, PD_CORR_T_ROOM, heats, "T_melt (thermal softening)");
+  option_of(PD_CORR_T_EXP, PD_CORR_T_EXP, heats, "T_melt (thermal softening)");
+  option_of(PD_CORR_TAYLOR_QUINNEY, PD_CORR_TAYLOR_QUINNEY, heats, "T_melt (thermal softening)");
+  option_of(PD_CORR_D2, PD_CORR_DC, damages, "d1 (Johnson-Cook damage)");
+  // the fracture strain at zero triaxiality and rate, d1 + d2, divides the
+  // plastic strain: it must be positive
+  if (damages && !(value(PD_CORR_D1, i, j) + value(PD_CORR_D2, i, j) > 0.0))
+    error->all(FLERR, "Pair pd/corr coeff {} {}: the fracture strain d1 + d2 = {} must be positive "
+               "(Johnson-Cook damage)", i, j, value(PD_CORR_D1, i, j) + value(PD_CORR_D2, i, j));
   if (heats && !(value(PD_CORR_T_MELT, i, j) > value(PD_CORR_T_ROOM, i, j)))
     error->all(FLERR, "Pair pd/corr coeff {} {}: T_melt {} must exceed T_room {}", i, j,
                value(PD_CORR_T_MELT, i, j), value(PD_CORR_T_ROOM, i, j));

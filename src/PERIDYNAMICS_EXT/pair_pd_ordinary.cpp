@@ -161,6 +161,12 @@ void PairPDOrdinary::setup_run()
   memory->create(lambda_bar, ntypes + 1, "pair:lambda_bar");
   memory->create(mu_bar, ntypes + 1, "pair:mu_bar");
   for (int t = 1; t <= ntypes; t++) {
+    // a type of another hybrid sub-style has no bonds here: no energy either
+    // (its NaN coefficients would make every atom's energy NaN)
+    if (!setflag[t][t]) {
+      lambda_bar[t] = mu_bar[t] = 0.0;
+      continue;
+    }
     pd_elastic m;
     pd_elastic_from_K_G(coef[PD_ORD_K][t][t], coef[PD_ORD_G][t][t], &m);
     const pd_lame l = pd_ordinary_lame(model_dim, &m);
@@ -171,9 +177,14 @@ void PairPDOrdinary::setup_run()
   // its type's (a lattice's atoms without surface correction) and every
   // type has the same: the force pass then gathers no far end's B
   uniform_b = !per_atom_norm && calibration_uniform();
-  const double b1 = pd_ordinary_atom(lambda_bar[1], mu_bar[1], type_norm(1), 0.0).b;
-  for (int t = 2; t <= ntypes; t++)
-    if (pd_ordinary_atom(lambda_bar[t], mu_bar[t], type_norm(t), 0.0).b != b1) uniform_b = 0;
+  // (the types of this style: another sub-style's atoms hold none of its bonds)
+  double b1 = NAN;
+  for (int t = 1; t <= ntypes; t++) {
+    if (!setflag[t][t]) continue;
+    const double b = pd_ordinary_atom(lambda_bar[t], mu_bar[t], type_norm(t), 0.0).b;
+    if (std::isnan(b1)) b1 = b;
+    if (b != b1) uniform_b = 0;
+  }
 }
 
 // Per-atom state in the bond store: the dilatation of owned atoms (compute
@@ -270,7 +281,7 @@ void PairPDOrdinary::report_extra()
 {
   std::string lame;
   for (int t = 1; t <= atom->ntypes; t++)
-    lame += fmt::format(" type {}: lambda_bar {:.4g} mu_bar {:.4g};", t, lambda_bar[t], mu_bar[t]);
+    if (setflag[t][t]) lame += fmt::format(" type {}: lambda_bar {:.4g} mu_bar {:.4g};", t, lambda_bar[t], mu_bar[t]);
   utils::logmesg(lmp, "pd/ordinary: strain order m = {}, influence {}, {};{}\n", order,
                  pd_influence_name((pd_influence_kind) influence),
                  per_atom_norm ? "normalized per atom (surface correction)"

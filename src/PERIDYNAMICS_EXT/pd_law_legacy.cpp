@@ -92,6 +92,10 @@ class LawLegacy : public PDFailureLaw {
     if (!legacy_mode())
       error->all(FLERR, "Pair {} coeff {} {}: 'fail legacy' reproduces PERI and needs the 'legacy' "
                  "pair style keyword", style(), i, j);
+    // PERI takes any number: a negative s00 breaks every bond in the first step
+    if (!(value(S00, i, j) > 0.0))
+      error->all(FLERR, "Pair {} coeff {} {}: 'fail legacy' s00 = {} must be positive (the critical "
+                 "stretch of an unstrained bond)", style(), i, j, value(S00, i, j));
   }
 
   // alpha 0 and one s00 for all type pairs: every atom's s0 is s00 after

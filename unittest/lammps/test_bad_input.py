@@ -151,6 +151,8 @@ def overflow(key, text="1e400"):
 BOND = "pair_style pd/bond\npair_coeff * * pmb "
 OK_ORD = f"E 1e9 nu 0.25 horizon {H}"
 CONTACT = "pair_style pd/contact\npair_coeff * * "
+JC = ("pair_style pd/corr model johnson_cook\npair_coeff * * E 72e9 nu 0.343 yield 250e6 jc_B 365e6 jc_n 0.04 "
+      f"horizon {H} ")
 cases += [
     # overflow, inf, nan, words: LAMMPS refuses words and nan/inf spelled out,
     # we refuse what overflows to inf (1e400), by the key's name
@@ -177,7 +179,7 @@ cases += [
     ("E so large the micromodulus overflows", block(6) + BOND + f"E 1e300 horizon {H}\n",
      "the inputs give c = inf"),
     ("Gc so small s0 underflows to 0", block(6) + ORD + f"{OK_ORD} fail stretch Gc 1e-320\n",
-     ("the inputs give s0 = 0", overflow("Gc", "1e-320")[1])),
+     ("Gc = 1e-320 is below the smallest normal number", overflow("Gc", "1e-320")[1])),
     ("contact stiffness overflows", block(6) + CONTACT + "stiffness 1e400\n",
      ("stiffness must be a positive finite number, got '1e400'", overflow("stiffness")[1])),
     ("contact distance overflows", block(6) + CONTACT + "stiffness 1e20 distance 1e400\n",
@@ -279,6 +281,22 @@ cases += [
      "'quadrature partial' and 'legacy' do not go together"),
     ("partial quadrature with legacy (other order)", block(6) + "pair_style pd/ordinary quadrature partial legacy\n",
      "'quadrature partial' and 'legacy' do not go together"),
+    # one rank's error (LAMMPS's own error->one) reaches the output too
+    ("plain hybrid with a type pair left unset", TWO_TYPES + "pair_style hybrid pd/ordinary pd/contact\n"
+     f"pair_coeff 1 1 pd/ordinary {OK_ORD}\npair_coeff 2 2 pd/contact stiffness 1e20\n" + RUN,
+     "All pair coeffs are not set"),
+    ("a subnormal modulus (its stable step is inf)", block(6) + BOND + f"K 1e-320 horizon {H}\n",
+     "K = 1e-320 is below the smallest normal number"),
+    ("'fail legacy' with a negative s00 (breaks every bond at once)", block(6) +
+     f"pair_style pd/bond legacy\npair_coeff * * pmb K 1e9 horizon {H} fail legacy -0.0005 0.25\n",
+     "'fail legacy' s00 = -0.0005 must be positive"),
+    ("Johnson-Cook d2 without d1 (no damage: d2 unused)", block(6) + JC + "d2 0.1\n",
+     "d2 (Johnson-Cook damage d2) is used only with d1"),
+    ("Johnson-Cook Dc without d1", block(6) + JC + "Dc 0.5\n", "Dc (critical damage"),
+    ("Johnson-Cook d1 0 (a zero fracture strain)", block(6) + JC + "d1 0\n",
+     "the fracture strain d1 + d2 = 0 must be positive"),
+    ("Johnson-Cook taylor_quinney without T_melt", block(6) + JC + "taylor_quinney 0.8\n",
+     "taylor_quinney (fraction of plastic work turned into heat) is used only with T_melt"),
     ("pd/contact legacy with friction", block(8) + f"pair_style hybrid/overlay pd/bond legacy pd/contact legacy friction 0.2\n"
      f"pair_coeff * * pd/bond pmb K 1e9 horizon {H}\npair_coeff * * pd/contact\ncomm_modify vel yes\n" + RUN,
      "has no friction"),

@@ -7,6 +7,11 @@
 - A restart written before the first run keeps fix pd/precrack's cut.
 - A 'run 0' loop with displace_atoms (quasi-static loading) books every bond
   it breaks, as the same loading with 'run 1' does.
+- pd/ordinary under hybrid/overlay with a type it has no coefficients for
+  (a contact-only impactor): finite constants and energy, not NaN.
+- An influence function that vanishes at the horizon (tupek) with partial
+  cells beyond it makes no zero-weight bonds, which a failure law would
+  "break" at once.
 """
 from lmptest import *
 
@@ -187,4 +192,32 @@ for ranks in (1, 2):
     restarted = (rows[-1]["c_frac[3]"], rows[-1]["c_frac[4]"])
     check(f"{ranks} rank(s): broken and lost counts continue across a restart (122 lost: the deleted atom's)",
           whole == restarted and whole[1] == 122 and whole[0] > 0, f"{whole} vs {restarted}")
+# --- another sub-style's type under hybrid/overlay ------------------------
+# type 2: one atom far above the block, pd/contact only; pd/ordinary has no
+# coefficients for it (its energy and constants used to be NaN)
+LONE = (f"units si\nboundary p p p\natom_style peri\natom_modify map array\nlattice sc {SPACING}\n"
+        "region box block 0 8 0 8 0 16\ncreate_box 2 box\nregion body block 0 8 0 8 0 8\n"
+        f"create_atoms 1 region body\ncreate_atoms 2 single 4 4 12\nset group all density {DENSITY}\n"
+        f"set group all volume {VOLUME}\n")
+HYB = (f"pair_style hybrid/overlay pd/ordinary pd/contact\npair_coeff 1 1 pd/ordinary E 1e9 nu 0.25 horizon {H}\n"
+       "pair_coeff * * pd/contact stiffness 1e20\nvelocity all create 1e-3 7 dist gaussian\nfix 1 all nve\n"
+       "timestep 1e-8\nthermo 5\nrun 10\n")
+out, rows = run(LONE + HYB, d)
+check("the lone atom is there", "Created 1 atoms" in out and "Loop time of" in out)
+check("pd/ordinary under hybrid/overlay with a contact-only type: finite energy at every step",
+      rows and all(math.isfinite(r["E_pair"]) and r["E_pair"] > 0.0 for r in rows), str([r["E_pair"] for r in rows][:3]))
+check("... and its setup report prints no NaN (constants of its own types only)",
+      "nan" not in " ".join(l for l in out.splitlines() if l.startswith("pd/")).lower())
+
+# --- zero-weight bonds ----------------------------------------------------
+# tupek's influence (1 - r/delta)^2 is 0 at the horizon; partial cells reach
+# past it. At rest with the energy law nothing may break.
+TUPEK = block(8) + (f"pair_style pd/ordinary influence tupek quadrature partial\n"
+                    f"pair_coeff * * E 1e9 nu 0.25 horizon {H} fail energy Gc 100\n"
+                    "compute f all pd/fracture\ncompute dmg all pd/damage\ncompute dmax all reduce max c_dmg\n"
+                    "thermo_style custom step pe c_f[3] c_dmax\nfix 1 all nve\ntimestep 1e-8\nrun 5\n")
+out, rows = run(TUPEK, d)
+check("tupek + partial + energy law at rest: no bond breaks and no damage",
+      rows and rows[-1]["c_f[3]"] == 0 and rows[-1]["c_dmax"] == 0.0,
+      f"broken {rows[-1]['c_f[3]']:.0f}, damage {rows[-1]['c_dmax']:.3g}" if rows else "no thermo")
 finish()

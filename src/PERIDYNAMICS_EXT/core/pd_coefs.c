@@ -1,11 +1,14 @@
 #include "pd_coefs.h"
 
+#include <float.h>
 #include <math.h>
 
 int pd_coef_valid(const pd_coef *c, double v)
 {
   switch (c->check) {
-    case PD_CHECK_POSITIVE: return v > 0.0;
+    /* a subnormal (below DBL_MIN, e.g. 1e-320) is no physical constant:
+       its reciprocals (stable time step, stretch) overflow to inf */
+    case PD_CHECK_POSITIVE: return v >= DBL_MIN;
     case PD_CHECK_RANGE: return v >= c->lo && v <= c->hi;
     default: return 1;
   }
