@@ -10,6 +10,7 @@
 #include "compute_pd_atom.h"
 #include "compute_pd_damage.h"
 #include "compute_pd_fracture.h"
+#include "compute_pd_fragments.h"
 #include "fix_pd_adr.h"
 #include "fix_pd_bonds.h"
 #include "fix_pd_precrack.h"
@@ -54,6 +55,8 @@ const Style styles[] = {
     {"compute", "pd/atom", "peridynamic per-atom fields", nullptr, &styled_creator<ComputePDAtom>},
     {"compute", "pd/damage", "peridynamic damage", nullptr, &styled_creator<ComputePDDamage>},
     {"compute", "pd/fracture", "dissipated fracture energy", nullptr, &styled_creator<ComputePDFracture>},
+    {"compute", "pd/fragments", "fragments: components of the intact bonds", nullptr,
+     &styled_creator<ComputePDFragments>},
 };
 
 }    // namespace

@@ -1,8 +1,9 @@
 /* The LAMMPS calls whose names or signatures changed between releases, in
  * one place. Which form a LAMMPS tree has is decided by CMake, which looks
  * at its headers (cmake/PDExtLammpsFeatures.cmake), not at its version:
- *   PDEXT_COMM_FIX_NAMED        comm->forward_comm_fix(fix, n) (before 24Mar2022;
- *                               later forward_comm(Fix *, n))
+ *   PDEXT_COMM_FIX_NAMED        comm->forward_comm_fix(fix, n) and
+ *                               forward_comm_compute(compute) (before 24Mar2022;
+ *                               later forward_comm(Fix *, n), forward_comm(Compute *))
  *   PDEXT_NEIGH_ADD_REQUEST     neighbor->add_request(...) with flags (24Mar2022 on;
  *                               before: neighbor->request() and public fields)
  *   PDEXT_MINIMUM_IMAGE_FLERR   domain->minimum_image(FLERR, dx, dy, dz) (12Jun2025 on)
@@ -37,6 +38,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+class Compute;
 class Force;
 class Pair;
 
@@ -57,6 +59,25 @@ namespace PDCompat {
     comm->reverse_comm_fix(fix, size);
 #else
     comm->reverse_comm(fix, size);
+#endif
+  }
+
+  /* The same for a compute (its comm_forward / comm_reverse values per atom). */
+  inline void forward_comm(Comm *comm, class Compute *compute)
+  {
+#ifdef PDEXT_COMM_FIX_NAMED
+    comm->forward_comm_compute(compute);
+#else
+    comm->forward_comm(compute);
+#endif
+  }
+
+  inline void reverse_comm(Comm *comm, class Compute *compute)
+  {
+#ifdef PDEXT_COMM_FIX_NAMED
+    comm->reverse_comm_compute(compute);
+#else
+    comm->reverse_comm(compute);
 #endif
   }
 

@@ -31,7 +31,8 @@ check("the plugin registers the package's styles", all(s in out for s in (
     "fix style plugin pd/bonds", "fix style plugin pd/precrack", "fix style plugin pd/timestep",
     "fix style plugin pd/adr",
     "compute style plugin pd/damage",
-    "compute style plugin pd/atom", "compute style plugin pd/fracture")), out[-600:])
+    "compute style plugin pd/atom", "compute style plugin pd/fracture",
+    "compute style plugin pd/fragments")), out[-600:])
 
 STEPS = ROUGH_VELOCITY + "fix 1 all nve\ntimestep 1.0e-7\nthermo 100\n"
 out, _ = run(LOAD + block(8) + STEPS + PAIRS["pd/bond legacy"] + "fix ts all pd/timestep\nrun 20\n", d)
