@@ -7,18 +7,8 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
-#include "compute_pd_atom.h"
-#include "compute_pd_damage.h"
-#include "compute_pd_fracture.h"
-#include "compute_pd_fragments.h"
-#include "fix_pd_adr.h"
-#include "fix_pd_bonds.h"
-#include "fix_pd_precrack.h"
-#include "fix_pd_timestep.h"
-#include "pair_pd_bond.h"
-#include "pair_pd_contact.h"
-#include "pair_pd_corr.h"
-#include "pair_pd_ordinary.h"
+// every style of the package: generated from their registration lines
+#include "pdext_plugin_includes.h"
 
 using namespace LAMMPS_NS;
 
@@ -41,22 +31,7 @@ struct Style {
 };
 
 const Style styles[] = {
-    {"pair", "pd/bond", "bond-based peridynamics (PMB, microplastic)", &pair_creator<PairPDBond>, nullptr},
-    {"pair", "pd/ordinary", "ordinary state-based peridynamics (Seth-Hill strain)",
-     &pair_creator<PairPDOrdinary>, nullptr},
-    {"pair", "pd/corr", "correspondence peridynamics (classical laws, extended Seth-Hill strain)",
-     &pair_creator<PairPDCorr>, nullptr},
-    {"pair", "pd/contact", "short-range peridynamic contact", &pair_creator<PairPDContact>, nullptr},
-    {"fix", "pd/bonds", "peridynamic bond families", nullptr, &styled_creator<FixPDBonds>},
-    {"fix", "pd/precrack", "peridynamic pre-cracks", nullptr, &styled_creator<FixPDPrecrack>},
-    {"fix", "pd/adr", "quasi-static loading by adaptive dynamic relaxation", nullptr,
-     &styled_creator<FixPDAdr>},
-    {"fix", "pd/timestep", "adaptive stable time step", nullptr, &styled_creator<FixPDTimestep>},
-    {"compute", "pd/atom", "peridynamic per-atom fields", nullptr, &styled_creator<ComputePDAtom>},
-    {"compute", "pd/damage", "peridynamic damage", nullptr, &styled_creator<ComputePDDamage>},
-    {"compute", "pd/fracture", "dissipated fracture energy", nullptr, &styled_creator<ComputePDFracture>},
-    {"compute", "pd/fragments", "fragments: components of the intact bonds", nullptr,
-     &styled_creator<ComputePDFragments>},
+#include "pdext_plugin_table.h"
 };
 
 }    // namespace

@@ -19,6 +19,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "pair_pd.h"
 #include "pair_pd_contact.h"
@@ -36,6 +37,10 @@ extern "C" {
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+
+// A WARNING when the step falls this many times below the material's
+// stable step (and at each further 10x)
+static constexpr double SHRINK_WARNING = 100.0;
 
 // What limits the step: the atom whose stable step is the smallest, and why.
 struct FixPDTimestep::Limit {
@@ -119,6 +124,11 @@ void FixPDTimestep::init()
   contact = dynamic_cast<PairPDContact *>(force->pair_match("pd/contact", 0, 0));
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix pd/timestep does not work with run_style respa");
+  // two fixes that set the step would undo each other's every change
+  for (int i = 0; i < modify->nfix; i++)
+    if (utils::strmatch(modify->fix[i]->style, "^dt/reset"))
+      error->all(FLERR, "Fix pd/timestep and fix {} ({}) both set the time step: unfix one of them",
+                 modify->fix[i]->id, modify->fix[i]->style);
   run = RunSummary();
 }
 
@@ -140,8 +150,10 @@ void FixPDTimestep::post_run()
 // between two checks keeps the step the uninterrupted run would have).
 void FixPDTimestep::setup(int)
 {
-  if (dt_set > 0.0 && update->dt == dt_set && update->ntimestep < next_check) return;
-  check("run start");
+  // the scale a shrinking step is measured against: the material's stable
+  // step in its reference state (the setup estimate)
+  run.base = material->stable_dt() > 0.0 ? material->stable_dt() : update->dt;
+  if (!(dt_set > 0.0 && update->dt == dt_set && update->ntimestep < next_check)) check("run start");
 }
 
 // Between the checks, a cheap one: an impact or a wall can make a particle
@@ -289,15 +301,31 @@ void FixPDTimestep::check(const char *when)
     error->all(FLERR, "Fix pd/timestep: at step {} the step the state allows, {:.6g}, is below min "
                "{:.6g} ({} at atom {}): the run would be unstable; lower min or change the scene",
                update->ntimestep, allowed, dtmin, CAUSES[lim.cause], lim.tag);
-  // a band: the step stays while it is within [allowed / grow, allowed],
-  // else becomes allowed / grow (so a shrinking step changes once per grow)
+  // a band: the step stays while it is within [allowed / grow, allowed]
+  // (with a slack of a tenth of grow - 1 at its lower end), else becomes
+  // allowed / grow: a shrinking step changes once per factor grow, and a
+  // step the state allows to grow follows only by more than the slack
+  // (without it, a step set to allowed / grow was set again at every check
+  // in which the allowed step grew by a hair: a plate pulled apart logged
+  // 300 changes of the step to itself)
   const double old = update->dt;
-  if (dt_set > 0.0 && old <= allowed && old * grow >= allowed) return;
+  const double slack = 1.0 + 0.1 * (grow - 1.0);
+  if (dt_set > 0.0 && old <= allowed && old * grow * slack >= allowed) return;
   const double dt = fmax(fmin(lim.dt / grow, dtmax), dtmin);
   set_dt(dt);
   run.changes[lim.cause]++;
   run.dtmin = fmin(run.dtmin, dt);
   run.dtmax = fmax(run.dtmax, dt);
+  // a step that shrinks by orders of magnitude slows the run as much: say
+  // so at 100x and at each further 10x (without 'min' nothing else would)
+  if (run.base > 0.0 && dt * SHRINK_WARNING < run.base && dt < run.warned / 10.0) {
+    run.warned = dt;
+    if (comm->me == 0)
+      error->warning(FLERR, "Fix pd/timestep: at step {} the step is {:.3g}, {:.3g} times below the "
+                     "material's stable step {:.3g} (limited by {} at atom {}): the run slows as much; "
+                     "'min' stops a run instead", update->ntimestep, dt, run.base / dt, run.base,
+                     CAUSES[lim.cause], lim.tag);
+  }
   if (comm->me == 0) {
     const std::string why = lim.cause == CAUSE_COMPRESSION
         ? fmt::format("compression: {:.3g}x its reference stiffness", lim.stiffening)

@@ -60,6 +60,8 @@ class FixPDTimestep : public Fix {
     bigint checks = 0;
     bigint changes[NCAUSES] = {};    // by cause
     double dtmin = INFINITY, dtmax = 0.0;
+    double base = 0.0;           // the material's stable step (setup estimate)
+    double warned = INFINITY;    // the step of the last shrink warning
     bigint total() const
     {
       bigint n = 0;

@@ -434,6 +434,17 @@ void PairPD::read_material_file(int narg, char **arg)
 
   int iarg = 4 + ntypes;
   if (iarg < narg && parse_model(arg[iarg])) iarg++;
+  // one name more than types (a material of the file or NULL where a
+  // keyword belongs): say so, not "unknown keyword"
+  if (iarg < narg && coef_index(arg[iarg]) < 0 && strcmp(arg[iarg], "fail") != 0 &&
+      strcmp(arg[iarg], "nobond") != 0) {
+    pd_material extra;
+    char unused[512];
+    if (strcmp(arg[iarg], "NULL") == 0 || pd_material_find(text.c_str(), arg[iarg], &extra, unused, sizeof unused) == 0)
+      error->all(FLERR, "Pair {} coeff file: more material names than the {} atom type{}: '{}' follows "
+                 "type {}'s (one name per type, NULL for a type without)", style, ntypes,
+                 ntypes > 1 ? "s" : "", arg[iarg], ntypes);
+  }
   for (int t = 1; t <= ntypes; t++) {
     const char *name = arg[3 + t];
     if (strcmp(name, "NULL") == 0) continue;
@@ -552,7 +563,7 @@ void PairPD::mix_interfaces()
 // not break or yield there.
 void PairPD::check_minimize()
 {
-  if (update->whichflag == 2 && (law->breaks() || history_per_bond()))
+  if (update->whichflag == 2 && (law->breaks() || yields()))
     error->all(FLERR, "Pair {}: minimize with bond failure or plasticity is not supported (line "
                "search trial states would break or yield bonds); for quasi-static loading use fix "
                "pd/adr", style_name());

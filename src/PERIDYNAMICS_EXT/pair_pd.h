@@ -184,6 +184,9 @@ class PairPD : public Pair, public PDFamilySource {
   // a partial cell whose centre lies beyond it (its share inside is there)
   static double influence_at(int kind, int dim, const PDBondGeometry &g);
   virtual int history_per_bond() const { return 0; }
+  // whether that history evolves with the deformation (plastic bonds), so
+  // that a trial state of minimize's line search would change it
+  virtual bool yields() const { return history_per_bond() > 0; }
   virtual std::string family_settings() const { return ""; }         // what else shapes the bonds
   virtual void setup_run() {}                                   // first compute of a run
   virtual void stable_dt_sum(double *sum) = 0;    // add stiffness sums over nall

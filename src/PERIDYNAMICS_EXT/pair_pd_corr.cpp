@@ -473,6 +473,11 @@ void PairPDCorr::report_extra()
                  "per-atom fields:{}\n", extended ? "extended (T14 4.2)" : "classical (T14 2.2.1)",
                  stabilization > 0.0 ? fmt::format(" with stabilization {}", stabilization) : "",
                  MODEL_NAMES[model], order, pd_influence_name((pd_influence_kind) influence), fields);
+  // the penalty has no energy of its own: pe + ke stops being conserved
+  if (stabilization > 0.0)
+    error->warning(FLERR, "Pair pd/corr: stabilization {} is a penalty force without an energy: kinetic "
+                   "+ potential energy is not conserved (an energy balance drifts); use it to keep "
+                   "zero-energy modes down, not where the energy budget matters", stabilization);
 }
 
 void PairPDCorr::restart_settings(PDSettingsIO &io)

@@ -57,6 +57,8 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   // each bond's reference vector xi, kept by the store (moves and restarts
   // with the bond): filled the first time the bond is seen
   int history_per_bond() const override { return 3; }
+  // (the reference vectors never change; the plastic state is per atom)
+  bool yields() const override { return plastic(); }
   void fill_reference_vectors();
   PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;

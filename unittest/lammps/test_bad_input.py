@@ -251,6 +251,8 @@ cases += [
     # material files
     ("too few material names", TWO_TYPES + f"pair_style pd/ordinary\npair_coeff * * file {MATERIALS} PMMA horizon {H}\n",
      "expected 2 material names (one per atom type, NULL for a type without), but type 2's is the keyword 'horizon'"),
+    ("two material names for one type", block(6) + f"pair_style pd/ordinary\npair_coeff * * file {MATERIALS} PMMA PMMA horizon {H}\n",
+     "more material names than the 1 atom type: 'PMMA' follows type 1's"),
     ("no material names", block(6) + f"pair_style pd/ordinary\npair_coeff * * file {MATERIALS}\n",
      "expected a path and 1 material names"),
     ("file on a single type pair", block(6) + f"pair_style pd/ordinary\npair_coeff 1 1 file {MATERIALS} PMMA\n",
@@ -271,6 +273,10 @@ cases += [
     ("compute pd/fracture with arguments", block(6) + ORD + f"{OK_ORD}\ncompute f all pd/fracture total\n",
      "takes no arguments"),
     ("fix pd/bonds by hand", block(6) + "fix mine all pd/bonds noweights history 0\n", "do not define it by hand"),
+    ("fix pd/timestep with fix dt/reset", block(8) + ORD + f"{OK_ORD}\nfix 1 all nve\nfix ts all pd/timestep\n"
+     "fix dt all dt/reset 1 NULL NULL 1e-5 units box\nrun 0\n", "both set the time step: unfix one of them"),
+    ("minimize with Johnson-Cook (plastic)", block(8) + JC + "\nminimize 1e-10 1e-10 10 100\n",
+     "minimize with bond failure or plasticity is not supported"),
     ("pd/contact unknown coefficient", block(6) + CONTACT + "stiffnes 1e20\n", "unknown keyword 'stiffnes'"),
     # quadrature (pair_pd.cpp)
     ("unknown quadrature", block(6) + "pair_style pd/bond quadrature gauss\n",

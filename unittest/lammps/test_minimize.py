@@ -10,6 +10,7 @@ scaling, and their Richardson extrapolation to an infinite width must give
 the input E within 2% (the lattice error of the moduli, THEORY.md, is below
 that). The energy and forces are consistent, or minimize would stop early
 (the line search needs the gradient of the reported energy)."""
+import re
 from lmptest import *
 
 d = workdir()
@@ -73,4 +74,18 @@ check_le("surface softening scales as 1/width (ratio of deficits 9/13 = 0.69)", 
 e9_log, _ = bar(9, 0.0)
 check_le("m = 0 gives the same small-strain modulus as m = 1/2 (0.1% strain)", abs(e9_log / e9 - 1), 1e-2,
          "the strain measures differ at O(strain) = 0.1%, times a geometric factor")
+
+# pd/corr elastic keeps no state that a trial step could change (its
+# per-bond data are reference vectors, its plastic state is per atom): the
+# line search is safe and minimize must be accepted (it refused it as
+# "plasticity") and lower the energy; 300 iterations, a quarter of the way
+corr = bar_script(9, 0).replace(f"pair_style pd/ordinary \npair_coeff * * E {E_IN} nu 0.35 horizon 0.0015001 m 0",
+                                f"pair_style pd/corr model elastic\npair_coeff * * E {E_IN} nu 0.35 horizon 0.0015001")
+corr = corr.replace("minimize 1e-15 0 5000 100000", "minimize 1e-15 0 300 100000")
+check("the pd/corr bar deck", "pd/corr model elastic" in corr and "minimize 1e-15 0 300" in corr)
+out, _ = run(corr, d, expect_error=True)
+energies = re.search(r"Energy initial, next-to-last, final = \n\s*(\S+)\s+(\S+)\s+(\S+)", out)
+check("pd/corr elastic: minimize is accepted and lowers the energy by more than a third",
+      "ERROR" not in out and energies is not None and float(energies.group(3)) < float(energies.group(1)) / 1.5,
+      energies.group(0).split("=")[-1].strip() if energies else next((l for l in out.splitlines() if "ERROR" in l), ""))
 finish()

@@ -12,6 +12,8 @@
 - An influence function that vanishes at the horizon (tupek) with partial
   cells beyond it makes no zero-weight bonds, which a failure law would
   "break" at once.
+- pd/corr's stabilization, a penalty without an energy, says at setup that
+  the energy is not conserved.
 """
 from lmptest import *
 
@@ -220,4 +222,11 @@ out, rows = run(TUPEK, d)
 check("tupek + partial + energy law at rest: no bond breaks and no damage",
       rows and rows[-1]["c_f[3]"] == 0 and rows[-1]["c_dmax"] == 0.0,
       f"broken {rows[-1]['c_f[3]']:.0f}, damage {rows[-1]['c_dmax']:.3g}" if rows else "no thermo")
+# --- stabilization: no energy, so a WARNING ---------------------------------
+CORR = block(8) + f"pair_style pd/corr model elastic stabilization 0.1\npair_coeff * * E 1e9 nu 0.25 horizon {H}\nrun 0\n"
+out, _ = run(CORR, d)
+check("pd/corr stabilization: a WARNING that the energy is not conserved",
+      "WARNING: Pair pd/corr: stabilization 0.1 is a penalty force without an energy" in out)
+out, _ = run(CORR.replace(" stabilization 0.1", ""), d)
+check("... and none without it", "penalty force without an energy" not in out)
 finish()

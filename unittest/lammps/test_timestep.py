@@ -110,4 +110,44 @@ bad, _ = run(BODY + "group half id <= 500\nfix ts half pd/timestep\nrun 0\n", d,
 check("ERROR for a group other than all", "use group all, not 'half'" in bad)
 bad, _ = run(BODY + "fix ts all pd/timestep min 1e-6\nrun 100\n", d, expect_error=True)
 check("ERROR when the stable step falls below min", "is below min 1e-06" in bad and "the run would be unstable" in bad)
+bad, _ = run(BODY + "fix ts all pd/timestep\nfix dt all dt/reset 1 NULL NULL 1e-5 units box\nrun 0\n", d,
+             expect_error=True)
+check("ERROR when fix dt/reset also sets the step", "both set the time step" in bad and "fix dt (dt/reset)" in bad)
+
+# A step that shrinks by orders of magnitude says so: one particle sent off
+# at 1e6 m/s, whose travel limit (0.05 spacings per step) is 2.5e-11 s,
+# some 4000x below the block's stable step. Warned at 100x and at each
+# further 10x: here once (the step stays above 1e-4 of the first)
+FAST = block(N, "s s s") + f"""pair_style pd/ordinary
+pair_coeff * * K {BULK} G {SHEAR} horizon {HORIZON}
+group fast id 555
+velocity fast set 1e6 0 0 units box
+fix 1 all nve
+fix ts all pd/timestep every 10
+timestep 1.0e-8
+run 20
+"""
+out, _ = run(FAST, d)
+warned = [l for l in out.splitlines() if "times below the material's stable step" in l]
+check("a step that falls 100x below the material's stable step is a WARNING naming the cause",
+      len(warned) == 1 and "limited by travel" in warned[0], warned[0][:200] if warned else "none")
+# A slowly changing state does not change the step at each check: a 2D
+# plate pulled apart (its allowed step creeping up by hairs) logged 300
+# changes of the step to itself in 3000 steps before the band's lower end
+# had its slack
+PULL = plate(40, "s s p").replace(f"density {DENSITY}", "density 1180") + f"""pair_style pd/ordinary plane stress thickness 1e-3
+pair_coeff * * E 3.5e9 nu 0.35 horizon 1.5e-3
+velocity all ramp vy -4 4 y 0 {40 * SPACING} units box
+fix 1 all nve
+fix 2d all enforce2d
+fix ts all pd/timestep
+run 3000
+"""
+out, _ = run(PULL, d)
+ch = changes(out)
+check("a plate pulled apart: the step is set at the run start and changes only by more than the slack (1%)",
+      1 <= len(ch) <= 5 and all(max(a / b, b / a) > 1.01 for _, a, b, _, _ in ch[1:]),
+      f"{len(ch)} changes, first {[(s, a, b) for s, a, b, _, _ in ch[:3]]}")
+out, _ = run(FAST.replace("velocity fast set 1e6 0 0", "velocity fast set 1 0 0"), d)
+check("... and a step that stays is not", "times below the material's stable step" not in out)
 finish()
