@@ -51,7 +51,9 @@ plugin: configure
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
-demo: build
+# the demo needs lmp alone (not the plugin and its plain LAMMPS)
+demo: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target lmp
 	./examples/impact-demo/run.sh $(LMP)
 
 # The benchmark block's tables (1-3 minutes); FULL=1 adds the size sweep,
