@@ -124,7 +124,7 @@ def main(argv):
     script = (f"set terminal pngcairo size {w},{h} font ',12'\nset output '{o.png}'\n"
               "set termoption noenhanced\n"
               f"set title '{title}'\nset xlabel '{o.x} ({o.length_unit})'\nset ylabel '{o.y} ({o.length_unit})'\n"
-              "set size ratio -1\nunset key\n" + palette +
+              "set size ratio -1\nunset key\nset offsets graph 0.03, graph 0.03, graph 0.03, graph 0.03\n" + palette +
               f"plot '-' using {using} with points pt 7 ps {ps:.2f} lc palette\n{data}e\n")
     exe = shutil.which("gnuplot")
     if not exe:

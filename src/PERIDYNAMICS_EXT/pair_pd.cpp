@@ -653,6 +653,13 @@ void PairPD::take_lattice_spacing()
 // spec at its own init (family_spec), which comes after the pair styles'.
 void PairPD::attach_bond_store()
 {
+  // families this style built are gone (unfix PD_BONDS): a new store would
+  // build them again, healing every broken bond and forgetting the
+  // dissipated energy
+  if (!PDCompat::fix_by_id(modify, FIX_ID) && had_families)
+    error->all(FLERR, "Pair {}: the bond store {} was removed after it held the bond families (unfix "
+               "{}?): a new one would heal every broken bond; keep it, or re-issue pair_style to start "
+               "the material anew", style_name(), FIX_ID, FIX_ID);
   if (!PDCompat::fix_by_id(modify, FIX_ID))
     modify->add_fix(fmt::format("{} all pd/bonds {} history {}", FIX_ID,
                                 uses_weights() ? "weights" : "noweights", history_per_bond()));
@@ -1064,6 +1071,7 @@ void PairPD::max_to_owners(double *a)
 void PairPD::report_setup()
 {
   report_pending = 0;
+  had_families = bonds->is_built();
   calibrate_families();
   setup_run();
   law->setup_run();

@@ -156,6 +156,7 @@ class PairPD : public Pair, public PDFamilySource {
   double lattice_spacing;   // legacy partial volumes need it (0: not yet known)
   FixPDBonds *bonds;
   int report_pending;       // print the setup report at the next compute
+  bool had_families = false;    // a run of this style used built families
   double timed_since;      // MPI_Wtime at the start of the evaluation the report times (< 0: none)
   double *work;             // per-atom scratch, 2 doubles per atom
   int nwork;

@@ -14,6 +14,8 @@
   "break" at once.
 - pd/corr's stabilization, a penalty without an energy, says at setup that
   the energy is not conserved.
+- 'unfix PD_BONDS' after bonds broke, then a run: an ERROR (a new store
+  would build the families again and heal every broken bond).
 """
 from lmptest import *
 
@@ -229,4 +231,13 @@ check("pd/corr stabilization: a WARNING that the energy is not conserved",
       "WARNING: Pair pd/corr: stabilization 0.1 is a penalty force without an energy" in out)
 out, _ = run(CORR.replace(" stabilization 0.1", ""), d)
 check("... and none without it", "penalty force without an energy" not in out)
+# --- the bond store removed after fracture ----------------------------------
+UNFIX = block(8) + (f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H} fail stretch 0.001\n"
+                    "velocity all ramp vx -5 5 x 0 0.004 units box\nfix 1 all nve\ntimestep 1e-8\n"
+                    "compute f all pd/fracture\nthermo_style custom step c_f[3]\nrun 100\n")
+out, rows = run(UNFIX, d)
+check("the deck breaks bonds", rows and rows[-1]["c_f[3]"] > 0, f"{rows[-1]['c_f[3]']:.0f}" if rows else "")
+out, _ = run(UNFIX + "unfix PD_BONDS\nrun 10\n", d, expect_error=True)
+check("unfix of the bond store after fracture, then a run: an ERROR instead of healed bonds",
+      "ERROR: Pair pd/bond: the bond store PD_BONDS was removed after it held the bond families" in out)
 finish()
