@@ -74,6 +74,7 @@ validate: build
 	./examples/riemann-2d/run.sh $(LMP)
 	for t in unittest/stability/test_*.py; do PDEXT_LMP=$(LMP) PDEXT_VALIDATE=1 python3 $$t || exit 1; done
 	./examples/plate-impact-2d/run.sh $(LMP)
+	./examples/fragmentation-tube/run.sh $(LMP)
 	@# valgrind runs no AVX-512 code: its decks take a portable build of the same sources
 	$(MAKE) build BUILD_DIR=$(BUILD_DIR)/portable PORTABLE=1
 	./unittest/valgrind/run.sh $(BUILD_DIR)/portable/lmp
