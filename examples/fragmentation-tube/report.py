@@ -157,12 +157,13 @@ def pictures(out, rows, dim):
     todo = []
     for n in (5, 10):
         todo.append((tag(dim, n, 600, seed) + ".dump", f"fragments_v600_n{n}.png", True,
-                     ["--color", "c_frag", "--cyclic",
+                     ["--spacing", repr(dx(n) * 1e-3), "--color", "c_frag", "--cyclic",
                       "--title", f"{what}, dx = {dx(n):.2f} mm, 600 m/s: fragments (colour = fragment), a quarter"]))
     for when in ("early", ""):
         name = tag(dim, 10, 200, seed) + (".early" if when else "") + ".dump"
         todo.append((name, f"damage_v200_n10{'_early' if when else ''}.png", True,
-                     ["--color", "c_dmg", "--range", "0", "1", "--label", "damage (broken share of bonds)",
+                     ["--spacing", repr(dx(10) * 1e-3), "--color", "c_dmg", "--range", "0", "1",
+                      "--label", "damage (broken share of bonds)",
                       "--title", f"{what}, dx = 1.00 mm, 200 m/s: damage, a quarter"]))
     made = []
     for dump, png, part, opts in todo:
