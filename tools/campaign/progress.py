@@ -1,7 +1,7 @@
 """Progress lines: cases done of all, time elapsed, time left.
 
 The time left is the pending cases times the mean time between finished
-cases of this session (all partitions together)."""
+cases since the driver started (all partitions together)."""
 import time
 
 
@@ -13,13 +13,13 @@ def hms(seconds):
 class Progress:
     def __init__(self, total, done, say):
         self.total, self.done, self.say = total, done, say
-        self.start, self.session = time.time(), 0
+        self.start, self.finished = time.time(), 0
 
     def case_done(self, key, row, results):
         self.done += 1
-        self.session += 1
+        self.finished += 1
         elapsed = time.time() - self.start
-        left = (self.total - self.done) * elapsed / self.session
+        left = (self.total - self.done) * elapsed / self.finished
         values = " ".join(f"{r}={row[r]}" for r in results)
         w = len(str(self.total))
         self.say(f"[{self.done:{w}d}/{self.total}] {key}: {values}   "
