@@ -144,12 +144,15 @@ void FixPDBonds::restart(char *buf)
   if (!complete)
     error->all(FLERR, "Fix pd/bonds: the restart file's bond record is damaged (inconsistent "
                "counts); it cannot be read");
+  // the pair style now differs from the one that wrote the file
+  static const char *const other = "the file was written with another pd/ pair style, model or "
+      "failure law: continue with the pair_style and pair_coeff that wrote it";
   if (r.weights != use_weights)
-    error->all(FLERR, "Fix pd/bonds: restart file bonds {} weights, the pair style now {}",
-               r.weights ? "carry" : "carry no", use_weights ? "needs them" : "does not");
+    error->all(FLERR, "Fix pd/bonds: restart file bonds {} weights, the pair style now {}; {}",
+               r.weights ? "carry" : "carry no", use_weights ? "needs them" : "does not", other);
   if (r.history != nhistory)
     error->all(FLERR, "Fix pd/bonds: restart file bonds carry {} history values, the pair style "
-               "now needs {}", r.history, nhistory);
+               "now needs {}; {}", r.history, nhistory, other);
 
   built = (int) r.built;
   resize_tables((int) r.maxpartner);

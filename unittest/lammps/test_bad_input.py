@@ -307,6 +307,118 @@ cases += [
      f"pair_coeff * * pd/bond pmb K 1e9 horizon {H}\npair_coeff * * pd/contact\ncomm_modify vel yes\n" + RUN,
      "has no friction"),
 ]
+
+# Restart files of each pd/ style (families built by 'run 0'), read back
+# with another style, model or setting: refused by name, never continued
+# with state dropped or misread.
+RESTARTS = {
+    "j2": f"pair_style pd/corr model j2\npair_coeff * * E 1e9 nu 0.3 yield 1e6 horizon {H}\n",
+    "elastic": f"pair_style pd/corr model elastic\npair_coeff * * E 1e9 nu 0.3 horizon {H}\n",
+    "ordinary": f"pair_style pd/ordinary\npair_coeff * * {OK_ORD}\n",
+    "bond": f"pair_style pd/bond\npair_coeff * * pmb K 1e9 horizon {H}\n",
+}
+for name, pair in RESTARTS.items():
+    run(block(6, "s s s") + pair + f"run 0\nwrite_restart {name}.restart\n", d)
+
+
+def restart(name, after):
+    return f"read_restart {name}.restart\n{after}fix 1 all nve\ntimestep 1e-8\nrun 1\n"
+
+
+CORR = "pair_style pd/corr model "
+CORR_OK = f"E 1e9 nu 0.3 horizon {H}"
+TS = block(8) + ORD + f"{OK_ORD}\nfix 1 all nve\ntimestep 1e-8\n"
+FRAG = block(6) + ORD + f"{OK_ORD}\ncompute frag all pd/fragments "
+cases += [
+    # pd/corr: model names, constants of another model, settings
+    ("pd/corr unknown model", block(6) + CORR + "plastic\n",
+     "model 'plastic': expected elastic, neohookean, j2 or johnson_cook"),
+    ("pd/corr model name in capitals", block(6) + CORR + "J2\n", "model 'J2': expected elastic"),
+    ("pd/corr model without a name", block(6) + "pair_style pd/corr model\n", "'model' needs a value"),
+    ("pd/corr elastic given a hardening modulus", block(6) + CORR + f"elastic\npair_coeff * * {CORR_OK} hardening 1e8\n",
+     "hardening (linear hardening modulus) is not used by model elastic"),
+    ("pd/corr neohookean given a yield stress", block(6) + CORR + f"neohookean\npair_coeff * * {CORR_OK} yield 1e6\n",
+     "yield (initial yield stress) is not used by model neohookean"),
+    ("pd/corr j2 given a Johnson-Cook constant", block(6) + CORR + f"j2\npair_coeff * * {CORR_OK} yield 1e6 jc_B 1e8\n",
+     "jc_B (Johnson-Cook hardening stress B) is not used by model j2"),
+    ("pd/corr johnson_cook without jc_B", block(6) + CORR + f"johnson_cook\npair_coeff * * {CORR_OK} yield 1e6 jc_n 0.1\n",
+     "model johnson_cook needs jc_B"),
+    ("pd/corr johnson_cook T_melt below T_room", block(8) + JC + "T_melt 200 heat_capacity 900\n",
+     "T_melt 200 must exceed T_room"),
+    ("pd/corr plane stress with j2", PLATE + CORR + f"j2 plane stress thickness 1e-3\npair_coeff * * {CORR_OK} yield 1e6\n"
+     "set group all volume 2.5e-10\nset group all density 1000\n" + RUN,
+     "plane stress needs model elastic (the j2 law"),
+    ("pd/corr plane stress with johnson_cook", PLATE + CORR + "johnson_cook plane stress thickness 1e-3\n"
+     f"pair_coeff * * {CORR_OK} yield 1e6 jc_B 1e8 jc_n 0.1\nset group all volume 2.5e-10\nset group all density 1000\n" + RUN,
+     "plane stress needs model elastic (the johnson_cook law"),
+    ("pd/corr unknown strain", block(6) + CORR + "elastic strain nonlocal\n",
+     "strain 'nonlocal': expected classical or extended"),
+    ("pd/corr strain without a value", block(6) + CORR + "elastic strain\n", "'strain' needs a value"),
+    ("pd/corr stabilization a word", block(6) + CORR + "elastic stabilization some\n", "some"),
+    ("pd/corr stabilization overflows", block(6) + CORR + "elastic stabilization 1e400\n", overflow("stabilization")),
+    ("pd/corr stabilization without a value", block(6) + CORR + "elastic stabilization\n", "'stabilization' needs a value"),
+    ("pd/corr unknown influence", block(6) + CORR + "elastic influence cubic\n", "unknown influence function 'cubic'"),
+    ("pd/corr with legacy", block(6) + CORR + f"elastic legacy\npair_coeff * * {CORR_OK}\n" + RUN,
+     "has no legacy PERI counterpart: drop 'legacy'"),
+    # fix pd/timestep: each keyword's bad values
+    ("pd/timestep every 0", TS + "fix ts all pd/timestep every 0\n", "every must be a step count >= 1, got '0'"),
+    ("pd/timestep every a word", TS + "fix ts all pd/timestep every often\n", "often"),
+    ("pd/timestep safety 0", TS + "fix ts all pd/timestep safety 0\n", "safety must be a fraction in (0, 1], got '0'"),
+    ("pd/timestep safety above 1", TS + "fix ts all pd/timestep safety 1.5\n", "safety must be a fraction in (0, 1], got '1.5'"),
+    ("pd/timestep travel negative", TS + "fix ts all pd/timestep travel -0.1\n",
+     "travel must be a fraction of the spacing >= 0 (0: no limit), got '-0.1'"),
+    ("pd/timestep min 0", TS + "fix ts all pd/timestep min 0\n", "min must be a time step > 0, got '0'"),
+    ("pd/timestep max negative", TS + "fix ts all pd/timestep max -1e-7\n", "max must be a time step > 0, got '-1e-7'"),
+    ("pd/timestep max overflows", TS + "fix ts all pd/timestep max 1e400\n",
+     ("max must be a time step > 0, got '1e400'", overflow("max")[1])),
+    ("pd/timestep min above max", TS + "fix ts all pd/timestep min 1e-6 max 1e-7\n", "min 1e-06 exceeds max 1e-07"),
+    ("pd/timestep grow 1", TS + "fix ts all pd/timestep grow 1\n", "grow must be a factor > 1, got '1'"),
+    ("pd/timestep unknown keyword", TS + "fix ts all pd/timestep often 5\n",
+     "unknown keyword 'often' (every, safety, travel, min, max, grow)"),
+    ("pd/timestep keyword without a value", TS + "fix ts all pd/timestep safety\n", "'safety' needs a value"),
+    ("pd/timestep on a group", TS + "group low id < 10\nfix ts low pd/timestep\n", "use group all, not 'low'"),
+    ("pd/timestep without a pd/ pair style", block(8) + f"pair_style peri/pmb\npair_coeff * * 1e20 {H} 1.0 0.0\n"
+     "fix 1 all nve\nfix ts all pd/timestep\nrun 0\n", "needs a pd/ material pair style"),
+    # quadrature and recontact on every material style
+    ("quadrature in capitals", block(6) + "pair_style pd/ordinary quadrature Partial\n",
+     "'quadrature Partial': expected point or partial"),
+    ("pd/corr quadrature without a name", block(6) + CORR + "elastic quadrature\n", "expected point or partial"),
+    ("pd/bond recontact a number", block(6) + "pair_style pd/bond recontact 1\n", "'recontact 1': expected near, any or none"),
+    ("pd/corr recontact without a mode", block(6) + CORR + "elastic recontact\n", "expected near, any or none"),
+    # fix pd/precrack
+    ("pre-crack of an unknown shape", block(6) + ORD + f"{OK_ORD}\nfix c all pd/precrack disk 0 0 0 1e-3\n",
+     "Illegal fix pd/precrack command: expected 'segment"),
+    ("pre-crack patch in 2D", PLATE + "pair_style pd/ordinary plane stress thickness 1e-3\n"
+     f"pair_coeff * * {OK_ORD}\nfix c all pd/precrack patch 0 0 0 1e-3 0 0 0 1e-3 0\n", "'patch' is for 3D"),
+    ("pre-crack coordinate a word", block(6) + ORD + f"{OK_ORD}\nfix c all pd/precrack patch 0 0 x 1e-3 0 0 0 1e-3 0\n",
+     ("coordinate 'x' must be a finite number", "instead of 'x'")),
+    ("pre-crack outside the box", block(6) + ORD + f"{OK_ORD}\nfix c all pd/precrack patch 1 1 1 1e-3 0 0 0 1e-3 0\n" + RUN,
+     "the crack lies outside the simulation box"),
+    # compute pd/fragments
+    ("pd/fragments unknown keyword", FRAG + "size 3\n", "unknown keyword 'size' (min_atoms, bins, range)"),
+    ("pd/fragments min_atoms 0", FRAG + "min_atoms 0\n", "min_atoms must be an integer >= 1"),
+    ("pd/fragments bins 0", FRAG + "bins 0\n", "bins must be an integer from 1 to"),
+    ("pd/fragments range lo 0", FRAG + "range 0 1\n", "range lo must be a finite mass > 0"),
+    ("pd/fragments range hi below lo", FRAG + "range 1 0.5\n", "range hi must be a finite mass > lo = 1"),
+    ("pd/fragments range missing hi", FRAG + "range 1\n", "'range' needs"),
+    # restarts read with another style, model or setting
+    ("a pd/corr elastic restart continued with model j2",
+     restart("elastic", CORR + f"j2\npair_coeff * * {CORR_OK} yield 1e6\n"),
+     "the restart file carries no per-atom field 'plastic_strain'"),
+    ("a pd/corr j2 restart continued with johnson_cook", restart("j2", JC + "\n"),
+     "the restart file carries no per-atom field 'corr_increment'"),
+    ("a pd/corr restart continued with pd/ordinary", restart("j2", ORD + f"{OK_ORD}\n"),
+     "restart file bonds carry 3 history values, the pair style now needs 0"),
+    ("a pd/bond restart continued with pd/ordinary", restart("bond", ORD + f"{OK_ORD}\n"),
+     "Pair pd/ordinary: the bond families were built for other pair settings"),
+    ("a pd/ordinary restart continued with pd/bond", restart("ordinary", BOND + f"K 1e9 horizon {H}\n"),
+     "Pair pd/bond: the bond families were built for other pair settings"),
+    ("a pd/bond pmb restart continued with microplastic bonds",
+     restart("bond", f"pair_style pd/bond\npair_coeff * * microplastic K 1e9 horizon {H} yield_stretch 1e-3\n"),
+     "restart file bonds carry 0 history values, the pair style now needs 1"),
+    ("a pd/ordinary restart continued with another influence function",
+     restart("ordinary", "pair_style pd/ordinary influence gaussian\n"), "the bond families were built for other pair settings"),
+]
 # every case on 1 and 2 ranks: the ERROR must reach the output either way
 for ranks in (1, 2):
     for what, script, message in cases:
@@ -317,5 +429,5 @@ for ranks in (1, 2):
         check(f"{what} ({ranks} rank{'s' if ranks > 1 else ''}): ERROR names it",
               bool(errors) and any(m in errors[0] for m in accepted) and not crashed,
               errors[0][:200] if errors else out.strip().splitlines()[-1][:200] if out.strip() else "no output")
-check(f"the catalogue has at least 80 cases ({len(cases)})", len(cases) >= 80)
+check(f"the catalogue has at least 150 cases ({len(cases)})", len(cases) >= 150)
 finish()
