@@ -16,6 +16,7 @@
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
+#include "pd_bonds_record.h"
 #include "pd_compat.h"
 #include "pd_error.h"
 #include "pd_table_memory.h"
@@ -117,6 +118,7 @@ void FixPDBonds::post_run()
 void FixPDBonds::init()
 {
   take_family_spec();
+  if (serving) check_fields_claimed();
   if (!serving && built && comm->me == 0)
     utils::logmesg(lmp, "pd/bonds: no pd/ material pair style in this run; the bond families "
                    "are kept unchanged until one returns\n");
@@ -349,9 +351,10 @@ void FixPDBonds::check_stored_partners(bool scan_bonds)
   MPI_Allreduce(&damaged, &total_damaged, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   MPI_Allreduce(&claimed, &bad_count, 1, MPI_LMP_BIGINT, MPI_MAX, world);
   if (total_damaged)
-    error->all(FLERR, "Fix pd/bonds: {} atoms arrived with a bond count outside 0 to {} (e.g. {}) or "
-               "a record longer or shorter than its count and the listed per-atom fields make: the "
-               "restart file is damaged", total_damaged, maxpartner, bad_count);
+    error->all(FLERR, "Fix pd/bonds: {} atoms arrived with a bond record that fails its checksum, a "
+               "bond count outside 0 to {} (largest seen: {}) or a record longer or shorter than its "
+               "count and the listed per-atom fields make: the restart file is damaged",
+               total_damaged, maxpartner, bad_count);
   if (!scan_bonds) return;
   bigint bad = 0;
   tagint example = 0;
@@ -659,23 +662,36 @@ void FixPDBonds::shorten_rows(int rowlength)
   maxexchange = per_atom_max(PDField::MIGRATE);
 }
 
+// An atom's restart record: its length, the exchange layout with the
+// RESTART fields, and the checksum of those values.
 int FixPDBonds::pack_restart(int i, double *buf)
 {
-  buf[0] = per_atom_doubles(i, PDField::RESTART) + 1;
-  return pack_atom(i, buf + 1, PDField::RESTART) + 1;
+  const int n = pack_atom(i, buf + 1, PDField::RESTART);
+  buf[n + 1] = pd_record_checksum_value(buf + 1, n);
+  buf[0] = n + 2;
+  return n + 2;
 }
 
 // A record whose length is not what its bond count and the global record's
-// field list make is damaged (said collectively at the first mapping).
+// field list make, or whose values fail their checksum, is damaged (said
+// collectively at the first mapping).
 void FixPDBonds::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const double *record = &extra[nlocal][m];
+  const double length = record[0];
+  if (!(length >= 2 && length <= maxsize_restart()) ||
+      pd_record_checksum_value(record + 1, (int) length - 2) != record[(int) length - 1]) {
+    if (!damaged) damaged_example = -1;
+    damaged++;
+    npartner[nlocal] = 0;
+    return;
+  }
   const bigint before = damaged;
   const int used = unpack_atom(nlocal, record + 1, PDField::RESTART);
-  if (damaged == before && used + 1 != (int) record[0]) {
+  if (damaged == before && used + 2 != (int) length) {
     if (!damaged) damaged_example = npartner[nlocal];
     damaged++;
     npartner[nlocal] = 0;
@@ -684,7 +700,7 @@ void FixPDBonds::unpack_restart(int nlocal, int nth)
 
 int FixPDBonds::size_restart(int i)
 {
-  return per_atom_doubles(i, PDField::RESTART) + 1;
+  return per_atom_doubles(i, PDField::RESTART) + 2;
 }
 
 int FixPDBonds::per_atom_max(int flag) const
@@ -694,7 +710,7 @@ int FixPDBonds::per_atom_max(int flag) const
 
 int FixPDBonds::maxsize_restart()
 {
-  return per_atom_max(PDField::RESTART) + 1;
+  return per_atom_max(PDField::RESTART) + 2;
 }
 
 bigint FixPDBonds::cut_crossing(const pd_crack &crack, int groupbit)

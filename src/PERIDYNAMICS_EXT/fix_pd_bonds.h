@@ -168,7 +168,9 @@ class FixPDBonds : public Fix {
   int unpack_atom(int i, const double *buf, int flag);
   int unpack_fields(int i, const double *buf, int flag);
   void append_field_list(class PDRecordWriter &out) const;
-  void read_field_list(class PDRecordReader &in);
+  static bool read_field_list(class PDRecordReader &in, std::vector<PDField> &list);
+  void take_field_list(const std::vector<PDField> &list);
+  void check_fields_claimed() const;
   void communicate(double *a, int width, int how);
 
   void take_family_spec();

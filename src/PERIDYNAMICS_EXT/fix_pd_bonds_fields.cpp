@@ -149,33 +149,40 @@ void FixPDBonds::append_field_list(PDRecordWriter &out) const
   }
 }
 
-// The field list of a restart file: each field is found by name (one not
-// declared yet is kept with the file's width until its owner declares it),
-// and sets the layout of the per-atom records that follow.
-void FixPDBonds::read_field_list(PDRecordReader &in)
+// The field list of a restart file, read without acting on it (the
+// record's checksum is verified first): false when it is damaged.
+bool FixPDBonds::read_field_list(PDRecordReader &in, std::vector<PDField> &list)
 {
-  const auto damaged_list = [&]() {
-    error->all(FLERR, "Fix pd/bonds: the restart file's list of per-atom fields is damaged; it "
-               "cannot be read");
-  };
   int64_t n = -1;
-  if (!in.get(n) || n < 0 || n > MAX_FILE_FIELDS) damaged_list();
-  restart_read.clear();
+  if (!in.get(n) || n < 0 || n > MAX_FILE_FIELDS) return false;
+  list.clear();
   for (int64_t k = 0; k < n; k++) {
     int64_t width = 0, flags = -1;
     std::string name;
-    if (!in.get(width) || !in.get(flags) || !in.get_string(name)) damaged_list();
+    if (!in.get(width) || !in.get(flags) || !in.get_string(name)) return false;
     if (width < 1 || width > MAX_WIDTH || flags < 0 || flags >= 256 || name.empty() ||
         (int) name.size() > MAX_NAME)
-      damaged_list();
-    int id = find_field(name);
-    if (id >= 0 && fields[id].decl.width != (int) width)
+      return false;
+    for (const PDField &seen : list)
+      if (seen.name == name) return false;
+    list.push_back({name, (int) width, (int) flags});
+  }
+  return true;
+}
+
+// Each field of the file's list is found by name (one not declared yet is
+// kept with the file's width until its owner declares it), and sets the
+// layout of the per-atom records that follow.
+void FixPDBonds::take_field_list(const std::vector<PDField> &list)
+{
+  restart_read.clear();
+  for (const PDField &file : list) {
+    int id = find_field(file.name);
+    if (id >= 0 && fields[id].decl.width != file.width)
       error->all(FLERR, "Fix pd/bonds: per-atom field '{}' has width {} in the restart file, {} in "
-                 "this build: the file cannot be read by it", name, (int) width, fields[id].decl.width);
-    for (int seen : restart_read)
-      if (seen == id) damaged_list();
+                 "this build: the file cannot be read by it", file.name, file.width, fields[id].decl.width);
     if (id < 0) {
-      id = add_field({name, (int) width, (int) flags | PDField::RESTART});
+      id = add_field({file.name, file.width, file.flags | PDField::RESTART});
       fields[id].provisional = true;
     }
     restart_read.push_back(id);
@@ -188,6 +195,19 @@ void FixPDBonds::read_field_list(PDRecordReader &in)
                  "was written by another build", fields[id].decl.name, fields[id].decl.width);
   }
   fields_from_file = true;
+}
+
+// A field of the restart file that the serving pair style did not declare
+// at its init (pair styles initialize before fixes) is state the run would
+// drop: the plastic strain of a J2 file continued with the elastic model.
+void FixPDBonds::check_fields_claimed() const
+{
+  for (const Field &f : fields)
+    if (f.provisional)
+      error->all(FLERR, "Fix pd/bonds: the restart file carries per-atom field '{}' (width {}), which "
+                 "pair style {} does not keep: the file was written with another pair style, model "
+                 "or failure law, and the run would drop that state; continue with the pair_style "
+                 "and pair_coeff that wrote it", f.decl.name, f.decl.width, spec.style);
 }
 
 /* ---------------------------------------------------------------------- */

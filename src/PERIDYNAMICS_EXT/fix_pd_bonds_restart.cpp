@@ -75,6 +75,9 @@ void FixPDBonds::write_restart(FILE *fp)
   append_field_list(lists);
 
   r.total_bytes = sizeof r + lists.bytes.size();
+  r.checksum = 0;
+  r.checksum = (int64_t) pd_record_checksum(lists.bytes.data(), lists.bytes.size(),
+                                            pd_record_checksum(&r, sizeof r));
   const int size = (int) r.total_bytes;
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(&r, sizeof r, 1, fp);
@@ -115,6 +118,7 @@ void FixPDBonds::restart(char *buf)
   std::vector<tagint> fresh_pairs;
   std::vector<double> fresh_lengths;
   std::vector<PendingCut> cuts;
+  std::vector<PDField> file_fields;
   bool complete = sane;
   if (sane) {
     PDRecordReader in(buf + sizeof r, r.total_bytes - sizeof r);
@@ -138,12 +142,21 @@ void FixPDBonds::restart(char *buf)
       cuts.push_back(cut);
     }
     // the per-atom fields of the per-atom records, by name (fix_pd_bonds_fields.cpp)
-    if (complete) read_field_list(in);
-    complete = complete && in.at_end();
+    complete = complete && read_field_list(in, file_fields) && in.at_end();
   }
   if (!complete)
     error->all(FLERR, "Fix pd/bonds: the restart file's bond record is damaged (inconsistent "
                "counts); it cannot be read");
+  // every byte read, none past the record's end: now its checksum
+  PDBondsRecord zeroed = r;
+  zeroed.checksum = 0;
+  const uint64_t sum = pd_record_checksum(buf + sizeof r, r.total_bytes - sizeof r,
+                                          pd_record_checksum(&zeroed, sizeof zeroed));
+  if (sum != (uint64_t) r.checksum)
+    error->all(FLERR, "Fix pd/bonds: the restart file's bond record fails its checksum: the file is "
+               "damaged (its bonds, damage or fracture totals would be misread); write it again or "
+               "continue from another restart file");
+  take_field_list(file_fields);
   // the pair style now differs from the one that wrote the file
   static const char *const other = "the file was written with another pd/ pair style, model or "
       "failure law: continue with the pair_style and pair_coeff that wrote it";

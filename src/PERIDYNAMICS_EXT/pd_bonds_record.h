@@ -8,7 +8,10 @@
    counts in the fixed part. write_restart fills the struct, restart()
    checks tag, version and sizes before it reads any field, and refuses
    an unknown version or a size mismatch with an ERROR that names the
-   format it found and the one it expects.
+   format it found and the one it expects; then the checksum of the whole
+   record (pd_record_checksum, with the checksum field zero), so that a
+   damaged byte anywhere in it is an ERROR, not a different run. Each
+   atom's restart record ends with the checksum of its own values.
 
    Changing the record: add the field (8 bytes: int64_t or double) at the
    end of its group, bump PD_BONDS_RECORD_VERSION, fill the field in
@@ -33,7 +36,7 @@
 namespace LAMMPS_NS {
 
 // The version this build writes and reads.
-constexpr int64_t PD_BONDS_RECORD_VERSION = 1;
+constexpr int64_t PD_BONDS_RECORD_VERSION = 2;
 // The record's first 8 bytes, where the records before versioning had
 // their format tag as a double (20261201.1).
 constexpr char PD_BONDS_RECORD_TAG[8] = {'P', 'D', 'B', 'O', 'N', 'D', 'S', '\0'};
@@ -68,7 +71,26 @@ struct PDBondsRecord {
   // then the per-atom field list, which carries its own count (int64), then
   // per field width, flags (int64) and name (put_string). A new list: its
   // count here, its entries after the cuts.
+
+  // -- integrity --
+  int64_t checksum;           // pd_record_checksum of all total_bytes, this field zero
 };
+
+// FNV-1a, 64 bits: every byte changes the sum, and one flipped bit or byte
+// never leaves it unchanged.
+inline uint64_t pd_record_checksum(const void *bytes, size_t n, uint64_t sum = 14695981039346656037ULL)
+{
+  const unsigned char *p = static_cast<const unsigned char *>(bytes);
+  for (size_t k = 0; k < n; k++) sum = (sum ^ p[k]) * 1099511628211ULL;
+  return sum;
+}
+
+// An atom's restart values summed as one double: the checksum's top 52
+// bits, an integer a double holds exactly, whatever copies it.
+inline double pd_record_checksum_value(const double *values, int n)
+{
+  return (double) (pd_record_checksum(values, sizeof(double) * (size_t) n) >> 12);
+}
 
 static_assert(std::is_trivially_copyable<PDBondsRecord>::value, "the record is written as bytes");
 static_assert(sizeof(PDBondsRecord) % 8 == 0, "every field of the record is 8 bytes wide");

@@ -85,6 +85,26 @@ def log_value(out, pattern):
     return float(m.group(1)) if m else math.nan
 
 
+def fnv1a(data, h=14695981039346656037):
+    """64-bit FNV-1a, the checksum of the bond store's restart records."""
+    for b in data:
+        h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+    return h
+
+
+def reseal_bond_record(raw):
+    """A restart file whose bond store global record was edited, with its
+    checksum made right again: what another build that wrote those bytes
+    would have written (the checksum is the record's last fixed field)."""
+    import struct
+    at = raw.index(b"PDBONDS\0")
+    fixed, total = struct.unpack_from("<qq", raw, at + 16)
+    out = bytearray(raw)
+    out[at + fixed - 8:at + fixed] = bytes(8)
+    out[at + fixed - 8:at + fixed] = struct.pack("<Q", fnv1a(out[at:at + total]))
+    return bytes(out)
+
+
 def replace_exact(text, old, new, count=1):
     """text with `old` replaced by `new`, which must occur exactly `count`
     times: an edit of an input deck that no longer matches would otherwise

@@ -176,18 +176,24 @@ check("and keeps the reference volumes", all(end2[k][2:4] == end[k][2:4] for k i
 check_le("the sum matches the total after the restart", abs(rows2[-1]["c_dsum"] / rows2[-1]["c_frac[1]"] - 1), 1e-12)
 
 # The global record names each restart field and its width: a file that
-# disagrees with this build is refused by the field's name.
+# disagrees with this build is refused by the field's name (the edited
+# record resealed with its checksum, as a build that wrote it would).
 raw = open(f"{d}/f.restart", "rb").read()
 flags = 2 | 4 | 8    # MIGRATE | RESTART | OUTPUT
 entry = struct.pack("<qqq", 1, flags, len("weighted_volume")) + b"weighted_volume"
 check("the restart file lists the field by name and width", raw.count(entry) == 1)
-open(f"{d}/f.wide", "wb").write(replace_exact(raw, entry, struct.pack("<qqq", 2, flags, 15) + b"weighted_volume"))
+open(f"{d}/f.wide", "wb").write(reseal_bond_record(
+    replace_exact(raw, entry, struct.pack("<qqq", 2, flags, 15) + b"weighted_volume")))
 out, _ = run("read_restart f.wide\nrun 0\n", d, expect_error=True)
 check("a field of another width is an ERROR naming it",
       "per-atom field 'weighted_volume' has width 2 in the restart file, 1 in this build" in out,
       out[out.find("ERROR"):][:200])
-open(f"{d}/f.renamed", "wb").write(replace_exact(raw, struct.pack("<q", 10) + b"dissipated", struct.pack("<q", 10) + b"dissipatex"))
+open(f"{d}/f.renamed", "wb").write(reseal_bond_record(
+    replace_exact(raw, struct.pack("<q", 10) + b"dissipated", struct.pack("<q", 10) + b"dissipatex")))
 out, _ = run("read_restart f.renamed\nrun 0\n", d, expect_error=True)
 check("fields are read by name, not by position: a file without 'dissipated' is an ERROR naming it",
       "restart file carries no per-atom field 'dissipated'" in out, out[out.find("ERROR"):][:200])
+out, _ = run("read_restart f.restart\nrun 0\n", d)
+check("resealing an unedited file leaves it as written (the test's checksum is the package's)",
+      reseal_bond_record(raw) == raw)
 finish()

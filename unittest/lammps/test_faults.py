@@ -5,8 +5,11 @@
   step against the stable estimate (before: NaN output, then a LAMMPS bin
   or lost-atom error). Two particles pushed onto each other with m = 0
   (log strain: infinite force) name the bond's two atoms.
-- A damaged restart file (partner IDs or bond counts overwritten) is an
-  ERROR, not a segfault.
+- A damaged restart file is an ERROR, not a segfault or a different run:
+  partner IDs or bond counts overwritten, one bit of a bond's length (the
+  sign that marks it broken: a change of the damage only) or of a field,
+  a byte of the global record's fracture totals. The package's records
+  carry checksums.
 - An ERROR raised on rank 0 alone (a missing material file) reaches
   log.lammps, on 1 and 2 ranks, with the output redirected.
 """
@@ -75,14 +78,28 @@ open(f"{d}/bad_count.restart", "wb").write(bad)
 bad = bytearray(raw)
 bad[at:at + 8] = struct.pack("<q", struct.unpack("<q", raw[at:at + 8])[0] - 1)   # one bond short of its record
 open(f"{d}/bad_length.restart", "wb").write(bad)
-for name, message in (("bad_tag", "stored bonds name no existing atom"),
-                       ("bad_count", "arrived with a bond count outside 0 to"),
-                       ("bad_length", "or a record longer or shorter than its count")):
+bad = bytearray(raw)
+bad[at + 47] ^= 0x80          # the sign bit of the first bond's length: the bond marked broken
+open(f"{d}/bad_broken.restart", "wb").write(bad)
+bad = bytearray(raw)
+bad[at + 24] ^= 0x01          # the last bit of the family volume
+open(f"{d}/bad_field.restart", "wb").write(bad)
+# the global record: its tag, then 8-byte fields; 'dissipated' is the 14th
+tag = raw.find(b"PDBONDS\0")
+check("the bond store's global record is found in the restart file", tag > 0 and raw.find(b"PDBONDS\0", tag + 1) < 0)
+bad = bytearray(raw)
+bad[tag + 8 * 13 + 3] ^= 0x10
+open(f"{d}/bad_total.restart", "wb").write(bad)
+ATOM = "atoms arrived with a bond record that fails its checksum"
+for name, message in (("bad_tag", ATOM), ("bad_count", ATOM), ("bad_length", ATOM), ("bad_broken", ATOM),
+                      ("bad_field", ATOM), ("bad_total", "the restart file's bond record fails its checksum")):
     for ranks in (1, 2):
         out, _ = run(f"read_restart {name}.restart\nrun 0\n", d, ranks=ranks, expect_error=True)
         crashed = any(s in out for s in ("Segmentation", "signal 11", "core dumped"))
         check(f"damaged restart ({name}, {ranks} rank(s)): an ERROR, no crash",
               message in out and not crashed, out.strip().splitlines()[-1][:160] if out.strip() else "")
+out, _ = run("read_restart good.restart\nrun 0\n", d)
+check("the undamaged restart file is read", "ERROR" not in out and "bonds kept" in out)
 
 # --- an ERROR on one rank reaches the log -------------------------------------
 deck = block(6) + f"pair_style pd/ordinary\npair_coeff * * file nosuch.pd PMMA horizon {H}\n"

@@ -39,18 +39,18 @@ raw = open(f"{d}/restart.{tag}", "rb").read()
 check("the bond record carries its tag once", raw.count(TAG) == 1)
 at = raw.index(TAG)
 version, fixed = struct.unpack_from("<qq", raw, at + 8)
-check("... then its version (1) and the size of its fixed part", version == 1 and fixed >= 32 and fixed % 8 == 0,
+check("... then its version (2) and the size of its fixed part", version == 2 and fixed >= 32 and fixed % 8 == 0,
       f"version {version}, {fixed} bytes")
 edits = {
-    "newer": (raw[:at + 8] + struct.pack("<q", 2) + raw[at + 16:],
-              "bond record is version 2; this build reads version 1 (the file was written by a newer"),
+    "newer": (raw[:at + 8] + struct.pack("<q", 3) + raw[at + 16:],
+              "bond record is version 3; this build reads version 2 (the file was written by a newer"),
     "resized": (raw[:at + 16] + struct.pack("<q", fixed + 8) + raw[at + 24:],
-                f"has a fixed part of {fixed + 8} bytes; this build expects {fixed} bytes for version 1"),
+                f"has a fixed part of {fixed + 8} bytes; this build expects {fixed} bytes for version 2"),
     "inconsistent": (raw[:at + 24] + struct.pack("<q", struct.unpack_from("<q", raw, at + 24)[0] + 24) +
                      raw[at + 32:], "the restart file's bond record is damaged (inconsistent counts)"),
     "unversioned": (raw[:at] + struct.pack("<d", 20261201.1) + raw[at + 8:],
                     "in an older format (format tag 20261201.1, before versioned records); this build "
-                    "reads bond record version 1"),
+                    "reads bond record version 2"),
 }
 for name, (data, message) in edits.items():
     open(f"{d}/restart.{name}", "wb").write(data)
