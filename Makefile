@@ -2,7 +2,15 @@
 # Debian machine: they install missing packages and fetch LAMMPS's source.
 
 PDEXT_CACHE       ?= $(HOME)/.cache/pdext
+# LAMMPS=2026: LAMMPS 4 Jul 2026 (Debian unstable), built in build/;
+# LAMMPS=2021: LAMMPS 29 Sep 2021 (Debian bookworm), the oldest tested tree,
+# built in build/lammps-2021. LAMMPS_SOURCE_DIR=<tree> builds another tree.
+LAMMPS            ?= 2026
+ifeq ($(LAMMPS),2026)
 BUILD_DIR         ?= build
+else
+BUILD_DIR         ?= build/lammps-$(LAMMPS)
+endif
 JOBS              ?= $(shell nproc)
 LAMMPS_SOURCE_DIR ?=
 # PORTABLE=1: the C core for any CPU of this architecture (no -march=native),
@@ -35,7 +43,11 @@ $(STAMP_SETUP): tools/setup-deps.sh
 # LAMMPS at configure time; unchanged style headers cause no recompilation.
 configure: | $(STAMP_SETUP)
 	src="$(LAMMPS_SOURCE_DIR)"; \
-	[ -n "$$src" ] || src=$$(./tools/fetch-lammps.sh $(PDEXT_CACHE)); \
+	[ -n "$$src" ] || src=$$(./tools/fetch-lammps.sh $(PDEXT_CACHE) $(LAMMPS)); \
+	old=$$(sed -n 's/^LAMMPS_SOURCE_DIR:PATH=//p' $(BUILD_DIR)/CMakeCache.txt 2>/dev/null); \
+	if [ -n "$$old" ] && [ "$$old" != "$$src" ]; then \
+	  echo "build: $(BUILD_DIR) was configured for $$old; starting it afresh for $$src"; \
+	  find $(BUILD_DIR) -mindepth 1 -maxdepth 1 ! -name 'lammps-*' -exec rm -rf {} +; fi; \
 	cmake -S . -B $(BUILD_DIR) -DLAMMPS_SOURCE_DIR="$$src" \
 	  -DPDEXT_PORTABLE=$(if $(filter 1,$(PORTABLE)),ON,OFF) \
 	  -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null

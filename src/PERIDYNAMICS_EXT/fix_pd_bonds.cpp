@@ -40,8 +40,8 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     maxpartner(1), nrows(0), nowned(0), npartner(nullptr), partner(nullptr), r0(nullptr), weight(nullptr),
     history(nullptr), far(nullptr), nlost_local(0), intact_at_map(-1), stored_total(0),
     nlost_reported(0), warned_images(0), family_key(0.0), record(lmp), stable_dt(0.0), comm_array(nullptr),
-    comm_width(1), comm_max(0), idissipated(-1), ifamily_volume(-1), iweighted_volume(-1),
-    fields_from_file(false), guard_step(INFINITY), damaged(0), damaged_example(0)
+    comm_width(1), comm_max(0), idissipated(-1), ifamily_volume(-1), iweighted_volume(-1), ibuild_volume(-1),
+    fields_from_file(false), guard_step(INFINITY), guard_ke(0.0), guard_ke_step(0), guard_window(0), guard_streak(0), guard_relaxing(false), damaged(0), damaged_example(0)
 {
   if (strcmp(id, "PD_BONDS") != 0)
     error->all(FLERR, "Fix pd/bonds is created by the pd/ pair styles (as PD_BONDS); do not define it by hand");
@@ -76,6 +76,7 @@ FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
   idissipated = add_field(own[0]);
   ifamily_volume = add_field(own[1]);
   iweighted_volume = add_field(own[2]);
+  ibuild_volume = add_field(own[3]);
 }
 
 FixPDBonds::~FixPDBonds()
@@ -118,7 +119,6 @@ void FixPDBonds::post_run()
 void FixPDBonds::init()
 {
   take_family_spec();
-  if (serving) check_fields_claimed();
   if (!serving && built && comm->me == 0)
     utils::logmesg(lmp, "pd/bonds: no pd/ material pair style in this run; the bond families "
                    "are kept unchanged until one returns\n");
@@ -151,12 +151,38 @@ void FixPDBonds::setup_post_neighbor()
   else {
     map_partners(true);
     check_identities();
+    check_volumes();
+    check_fields_claimed();
     // kept families (an earlier run, or a restart file): the log shows
     // that they were not rebuilt, and how many bonds they hold
     if (comm->me == 0)
       utils::logmesg(lmp, "pd/bonds: {} bonds kept, {} of them broken (families from an earlier run or "
                      "the restart file, not rebuilt)\n", stored_total, stored_total - intact_at_map);
   }
+}
+
+// The bonds' weights, the families' volumes and every material's
+// calibration are of the volumes at the build: a volume set since (the
+// 'set' command between runs) would change the stiffness and make energy.
+void FixPDBonds::check_volumes()
+{
+  const double *built_volume = field(ibuild_volume), *vfrac = atom->vfrac;
+  bigint changed = 0;
+  tagint example = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (vfrac[i] != built_volume[i] && built_tag[i] != 0) {
+      changed++;
+      example = MAX(example, atom->tag[i]);
+    }
+  bigint total;
+  MPI_Allreduce(&changed, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (!total) return;
+  tagint who;
+  MPI_Allreduce(&example, &who, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  error->all(FLERR, "Fix pd/bonds: the volume of {} atom{} changed since the bond families were built "
+             "(e.g. atom {}: 'set ... volume' after the first run); the bonds, their weights and the "
+             "materials' calibration are of the volumes at the build: set volumes before the first run",
+             total, total > 1 ? "s" : "", who);
 }
 
 // Between runs, commands can renumber atoms (delete_atoms with compress

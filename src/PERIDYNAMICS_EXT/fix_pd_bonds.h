@@ -62,6 +62,9 @@ class FixPDBonds : public Fix {
 
   // the families exist (built once, kept by restart)
   bool is_built() const { return built; }
+  // what each bond carries: a weight, and how many history values
+  bool carries_weights() const { return use_weights; }
+  int history_count() const { return nhistory; }
   pd_bond_view view() const;
   // the bonds as plain rows (the fracture record's replay reads and signs them)
   PDBondTable table() const;
@@ -158,7 +161,7 @@ class FixPDBonds : public Fix {
     bool provisional;      // known only from a restart file so far: flags taken from the file
   };
   std::vector<Field> fields;
-  int idissipated, ifamily_volume, iweighted_volume;
+  int idissipated, ifamily_volume, iweighted_volume, ibuild_volume;
   std::vector<int> restart_read;    // the fields of the per-atom restart records being read, in the file's order
   bool fields_from_file;            // the store was read from a restart file
   int field_doubles(int flag) const;    // per atom, over the fields with that flag
@@ -182,12 +185,21 @@ class FixPDBonds : public Fix {
   void report_bonds_by_type(const std::vector<bigint> &touching);
   // the blow-up guard (fix_pd_bonds_guard.cpp)
   double guard_step;        // the largest distance an atom may move in one step
+  double guard_ke;          // kinetic energy at setup or at the last growth check
+  bigint guard_ke_step;     // and its step
+  bigint guard_window;      // steps the last growth took (0: none yet)
+  int guard_streak;         // growths in a row that took no longer than the one before
+  bool guard_relaxing;      // a pseudo-time relaxation (fix pd/adr): no energy check
   void guard(bool forces_only);
-  static bool guard_screen(const double *f, const double *v, int n, double vmax2);
+  static bool guard_screen(const double *f, const double *v, const double *mass, const double *volume,
+                           int n, double vmax2, double &mv2);
+  void guard_drift(double *vc);
+  std::string guard_energy(double ke);
   std::string blow_up(int i, const char *what, double value);
   bigint damaged;           // stored bond records found damaged (restart, exchange)
   bigint damaged_example;   // the count one of them claimed
   void check_identities();
+  void check_volumes();
   void reference_sums();
   void remove_bond(int i, int k);
   void resize_tables(int rowlength);

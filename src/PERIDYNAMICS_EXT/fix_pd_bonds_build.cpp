@@ -361,6 +361,8 @@ void FixPDBonds::build_families()
   built = 1;
   map_partners(true, true);
   reference_sums();
+  double *built_volume = field(ibuild_volume);
+  for (int i = 0; i < nlocal; i++) built_volume[i] = atom->vfrac[i];
   // cracks of a restart file written before the first run (their fixes
   // need not exist any more); this run's pd/precrack fixes cut for themselves
   bigint precut = 0;

@@ -36,7 +36,10 @@ constexpr int MAX_WIDTH = 100000;        // doubles per atom of one field
 std::vector<PDField> FixPDBonds::own_fields()
 {
   const int kept = PDField::MIGRATE | PDField::RESTART | PDField::OUTPUT;
-  return {{"dissipated", 1, kept}, {"family_volume", 1, kept}, {"weighted_volume", 1, kept}};
+  return {{"dissipated", 1, kept},
+          {"family_volume", 1, kept},
+          {"weighted_volume", 1, kept},
+          {"build_volume", 1, PDField::MIGRATE | PDField::RESTART}};
 }
 
 int FixPDBonds::find_field(const std::string &name) const
@@ -197,9 +200,10 @@ void FixPDBonds::take_field_list(const std::vector<PDField> &list)
   fields_from_file = true;
 }
 
-// A field of the restart file that the serving pair style did not declare
-// at its init (pair styles initialize before fixes) is state the run would
-// drop: the plastic strain of a J2 file continued with the elastic model.
+// A field of the restart file that no one declared by the set-up of the
+// run (pair styles, fixes and computes declare theirs at init) is state the
+// run would drop: the plastic strain of a J2 file continued with the
+// elastic model.
 void FixPDBonds::check_fields_claimed() const
 {
   for (const Field &f : fields)

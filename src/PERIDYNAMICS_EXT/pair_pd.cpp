@@ -431,6 +431,11 @@ void PairPD::read_material_file(int narg, char **arg)
   if (len < 0) pd_error_all(lmp, FLERR, fmt::format("Pair {} coeff file: cannot open '{}'", style, arg[3]));
   text.resize(len);
   MPI_Bcast(&text[0], len, MPI_CHAR, 0, world);
+  // the parser reads C text: a NUL would end the file there, unseen
+  const size_t nul = text.find('\0');
+  if (nul != std::string::npos)
+    error->all(FLERR, "Pair {} coeff file '{}': a NUL byte on line {} (byte {}): not a text file, or a "
+               "damaged one", style, arg[3], 1 + std::count(text.begin(), text.begin() + nul, '\n'), nul + 1);
 
   int iarg = 4 + ntypes;
   if (iarg < narg && parse_model(arg[iarg])) iarg++;
@@ -665,6 +670,11 @@ void PairPD::attach_bond_store()
                                 uses_weights() ? "weights" : "noweights", history_per_bond()));
   bonds = dynamic_cast<FixPDBonds *>(PDCompat::fix_by_id(modify, FIX_ID));
   if (!bonds) error->all(FLERR, "Fix ID {} is taken by a fix that is not pd/bonds", FIX_ID);
+  if (bonds->carries_weights() != uses_weights() || bonds->history_count() != history_per_bond())
+    error->all(FLERR, "Pair {}: the bond store {} has bonds with {} and {} history values, this style "
+               "needs {} and {}: it was defined by hand or for another pair style; let the pair style "
+               "create it", style_name(), FIX_ID, bonds->carries_weights() ? "weights" : "no weights",
+               bonds->history_count(), uses_weights() ? "weights" : "no weights", history_per_bond());
   declare_fields();
 }
 
@@ -1052,6 +1062,20 @@ void PairPD::current_stiffness_sums(double *current, double *closing)
   tangent_sum(current, closing);
   bonds->sum_to_owners(current);
   bonds->max_to_owners(closing);
+}
+
+// The stable step of the current state: each particle's bound on its
+// current stiffness (as fix pd/timestep takes it, without contact).
+double PairPD::current_stable_dt()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  std::vector<double> current(nall), closing(nall);
+  current_stiffness_sums(current.data(), closing.data());
+  double mine = INFINITY, all;
+  for (int i = 0; i < atom->nlocal; i++)
+    mine = MIN(mine, pd_stable_dt(atom->rmass[i], force->ftm2v * current[i]));
+  MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_MIN, world);
+  return all;
 }
 
 void PairPD::reference_stiffness_sums(double *reference)

@@ -75,6 +75,7 @@ class PairPD : public Pair, public PDFamilySource {
   // the bond families this style asks the bond store for (PDFamilySource)
   PDFamilySpec family_spec() const override;
   void catch_up(bool run_ends) override;    // the failure law's deferred per-atom state
+  double current_stable_dt() override;
   // the pd/ material style of the current pair style (alone or a hybrid
   // sub-style, found by type), or null
   static PairPD *active(class Force *);

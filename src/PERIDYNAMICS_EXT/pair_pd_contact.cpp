@@ -210,11 +210,17 @@ void PairPDContact::filter_pairs()
   // volumes some reach past the horizon)
   const PDFamilySpec spec = material && !legacy ? material->family_spec() : PDFamilySpec();
   PDBondGeometry g;
+  // the list's own cutoff, applied here too: newer LAMMPS serves a
+  // request whose cutoff is below every pair cutoff with the full list
+  double **x = atom->x;
+  const double cut = cutmax_contact + neighbor->skin, cut2 = cut * cut;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    candidates += list->numneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
+      const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
+      if (dx * dx + dy * dy + dz * dz > cut2) continue;
+      candidates++;
       if (legacy) {
         // PERI: every neighbour pair, bonded or not, at min(0.9 |xi|, 1.35 lc)
         double d0[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};

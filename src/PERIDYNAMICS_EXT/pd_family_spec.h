@@ -85,6 +85,9 @@ class PDFamilySource {
   // per-atom state the style deferred, made exact while the atoms' indices
   // still hold: before they migrate (pre_exchange), and when a run ends
   virtual void catch_up(bool /*run_ends*/) {}
+  // the stable time step estimate of the current state (collective), for
+  // the blow-up guard
+  virtual double current_stable_dt() = 0;
 
  protected:
   // Never deleted through this base (the style is deleted as a Pair), so no

@@ -20,11 +20,23 @@ def workdir():
     return tempfile.mkdtemp(prefix="pdtest-")
 
 
+# The neighbor settings a test deck runs with when it states none: LAMMPS's
+# default delay changed (10 before 2026, 0 since), so every tree is told.
+NEIGHBOR_DEFAULTS = "neigh_modify every 1 delay 10 check yes\n"
+
+
+def with_neighbor_defaults(script):
+    """The script, led by NEIGHBOR_DEFAULTS unless it sets neigh_modify itself."""
+    if re.search(r"^\s*neigh_modify\s", script, re.M):
+        return script
+    return NEIGHBOR_DEFAULTS + script
+
+
 def run(script, cwd, ranks=1, expect_error=False, variables=None, name="in.test"):
     """Run an input script; returns (stdout+stderr, thermo rows of the last run)."""
     path = os.path.join(cwd, name)
     with open(path, "w") as f:
-        f.write(script)
+        f.write(with_neighbor_defaults(script))
     cmd = [LMP, "-in", name, "-echo", "none", "-log", name + ".log"]
     for k, v in (variables or {}).items():
         cmd += ["-var", k, str(v)]

@@ -18,6 +18,9 @@ for i in range(start, len(lines)):
         lines[i] = " ".join(w)
 open(f"{d}/zero.data", "w").write("\n".join(lines) + "\n")
 open(f"{d}/bad.pd", "w").write("material glass\n  density 2500\n  E -70e9  # sign slip\n  nu 0.2\nend\n")
+# a NUL byte before the material: C text would end there, and the
+# material would seem missing
+open(f"{d}/nul.pd", "wb").write(b"# materials\n\0\nmaterial glass\n  density 2500\n  E 70e9\n  nu 0.2\nend\n")
 MATERIALS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../potentials/materials.pd")
 PLATE = ("units si\ndimension 2\nboundary p p p\natom_style peri\natom_modify map array\nlattice sq 5e-4\n"
          "region b block 0 10 0 10 -0.5 0.5\ncreate_box 1 b\ncreate_atoms 1 box\n")
@@ -259,6 +262,8 @@ cases += [
      "use 'pair_coeff * * file"),
     ("material file missing", block(6) + f"pair_style pd/ordinary\npair_coeff * * file nosuch.pd PMMA horizon {H}\n",
      "cannot open 'nosuch.pd'"),
+    ("material file with a NUL byte", block(6) + f"pair_style pd/ordinary\npair_coeff * * file nul.pd glass horizon {H}\n",
+     "coeff file 'nul.pd': a NUL byte on line 2 (byte 13): not a text file, or a damaged one"),
     ("material file value inf", block(6) + f"pair_style pd/ordinary\npair_coeff * * file inf.pd glass horizon {H}\n",
      "must be a finite number"),
     ("material file key twice", block(6) + f"pair_style pd/ordinary\npair_coeff * * file twice.pd glass horizon {H}\n",
@@ -405,6 +410,13 @@ cases += [
     ("a pd/corr elastic restart continued with model j2",
      restart("elastic", CORR + f"j2\npair_coeff * * {CORR_OK} yield 1e6\n"),
      "the restart file carries no per-atom field 'plastic_strain'"),
+    ("a bond store made by hand without the weights pd/ordinary needs",
+     block(8) + "fix PD_BONDS all pd/bonds noweights history 0\n" + ORD + f"{OK_ORD}\n" + RUN,
+     "Pair pd/ordinary: the bond store PD_BONDS has bonds with no weights and 0 history values, this style "
+     "needs weights and 0"),
+    ("set volume after the families were built", block(8) + ORD + f"{OK_ORD}\nrun 0\n"
+     "set atom 5 volume 2e-10\nfix 1 all nve\ntimestep 1e-8\nrun 1\n",
+     "the volume of 1 atom changed since the bond families were built (e.g. atom 5:"),
     ("a pd/corr j2 restart continued with model elastic",
      restart("j2", CORR + f"elastic\npair_coeff * * {CORR_OK}\n"),
      "the restart file carries per-atom field 'plastic_strain' (width 1), which pair style pd/corr does not keep"),

@@ -2,7 +2,9 @@
 m = 0, bonds failing by energy, stiff contact (in.wall). At a fixed step
 it blows up: at 2e-8 s (0.089 of the setup estimate, the step the
 package was first tried with on this scene) and at half that. With fix
-pd/timestep it must keep every criterion of hardcase.py. Reduced: 30 us;
+pd/timestep it must keep every criterion of hardcase.py. The fixed-step
+runs must end in the blow-up guard's ERROR naming fix pd/timestep (the
+speed limit stops them at steps 237 and 140). Reduced: 30 us;
 full (PDEXT_VALIDATE=1): 80 us."""
 from hardcase import *
 
@@ -17,6 +19,13 @@ for dt in (2e-8, 1e-8):
     print(f"SCENE wall 2000 m/s: fixed dt {dt}: {'stable' if fixed['stable'] else 'UNSTABLE'}: {describe(fixed)}")
     check(f"at the fixed step {dt} the scene blows up or gains energy (what the adaptive step must prevent)",
           not fixed["stable"], describe(fixed))
+    # the blow-up is the guard's ERROR, which points to the adaptive step
+    # and, the step being below the setup's estimate, to the stiffened
+    # state, not a NaN or a lost-atoms error of LAMMPS
+    check(f"at the fixed step {dt} the guard stops the run with an ERROR that names fix pd/timestep",
+          fixed["error"] is not None and "unstable at step" in fixed["error"] and "fix pd/timestep" in fixed["error"]
+          and "the state stiffened since" in fixed["error"],
+          (fixed["error"] or describe(fixed))[:240])
 out, rows, frames, wall = run_scene(deck, d, dict(base, adapt=ADAPTIVE, dt=2e-8), "adaptive")
 r = outcome(out, rows, frames, HORIZON, H, TOL, APART)
 check_reached("wall 2000 m/s", r, tmax)
