@@ -16,6 +16,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 MATERIALS = os.path.join(ROOT, "potentials", "materials.pd")
 THICK = 1.0e-3            # 2D plate thickness (m)
+# Every deck states its neighbor settings: LAMMPS's defaults differ
+# between versions (the reneighboring delay) and units si's default skin
+# (1 mm) is several spacings here. The skin is a fraction of the spacing.
+SKIN = 0.2
+NEIGHBOR = "neighbor {skin} bin\nneigh_modify every 1 delay 0 check yes\n"
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
@@ -67,10 +72,10 @@ def header(lattice, h, boundary):
     """units, dimension, atom style and the lattice command."""
     dims, style, a_over_h, _ = LATTICES[base_lattice(lattice)]
     return ("units si\n" + ("dimension 2\n" if dims == 2 else "") +
-            f"boundary {boundary}\natom_style peri\natom_modify map array\n"
+            f"boundary {boundary}\natom_style peri\natom_modify map array\n" + NEIGHBOR.format(skin=repr(SKIN * h)) +
             # room for the families' neighbor lists: 6 spacings with
-            # partial-volume quadrature (cutoff past the horizon) and
-            # units si's default skin overflow LAMMPS's default of 2000
+            # partial-volume quadrature (cutoff past the horizon)
+            # overflow LAMMPS's default of 2000
             "neigh_modify one 8000 page 80000\n"
             f"lattice {style} {a_over_h * h!r}\n")
 
