@@ -212,3 +212,56 @@ def accepts(lmp, workdir, pair_text, lattice="sc", h=1e-3):
         return True
     except (LammpsError, subprocess.TimeoutExpired):
         return False
+
+
+# ----------------------------------------------------------------------
+# The lines a user pastes into a deck for a measured setting: a is the
+# spacing (V^(1/d)), the horizon a number of spacings, the material's
+# constants as variables (${E}, ${nu}, ${Gc}, ${t} the plate thickness).
+
+LATTICE_LINE = {"sc": "lattice sc ${a}", "square": "lattice sq ${a}", "sq": "lattice sq ${a}",
+                "fcc": f"lattice fcc $({LATTICES['fcc'][2]:.6g}*a)",
+                "hex": f"lattice hex $({LATTICES['hex'][2]:.6g}*a)"}
+
+
+def user_lines(s):
+    """The deck lines of a setting dict (the keys of the accuracy cases:
+    style, lattice, plane, influence, strain, quadrature, recontact,
+    ratio, m or order, law, spacing or h, dt_fraction; timestep, note:
+    a comment line)."""
+    lines = []
+    a = s.get("spacing", s.get("h"))
+    if a:
+        lines.append(f"variable a equal {a:g}")
+    lat = s.get("lattice")
+    if lat:
+        base = base_lattice({"sq": "square"}.get(lat, lat))
+        lines.append(LATTICE_LINE[base] + ("  # particles moved at random by up to 0.2 a" if "jitter" in lat else ""))
+    style = s.get("style", "")
+    words = [f"pair_style {style}"]
+    if style == "pd/corr":
+        words.append(f"model elastic strain {s.get('strain', 'extended')}")
+    if s.get("influence") and style != "pd/bond":
+        words.append(f"influence {s['influence']}")
+    words.append(f"quadrature {s.get('quadrature') or 'point'}")
+    if s.get("recontact"):
+        words.append(f"recontact {s['recontact']}")
+    dims = dims_of({"sq": "square"}.get(lat, lat)) if lat else s.get("dim", 3)
+    if dims == 2:
+        words.append(f"{s.get('plane', 'plane stress')} thickness ${{t}}")
+    lines.append(" ".join(words))
+    coeff = "pair_coeff * * pmb E ${E}" if style == "pd/bond" else "pair_coeff * * E ${E} nu ${nu}"
+    coeff += f" horizon $({float(s['ratio'])!r}*a)"
+    m = s.get("m", s.get("order"))
+    if m is not None and style != "pd/bond":
+        coeff += f" m {m:g}"
+    if s.get("law"):
+        coeff += f" fail {s['law']} Gc ${{Gc}}"
+    lines.append(coeff)
+    if s.get("dt_fraction") is not None:
+        lines.append(f"fix dt all pd/timestep safety {s['dt_fraction']:g}")
+    if s.get("timestep"):
+        lines.append(f"timestep {s['timestep']:g}")
+    if s.get("note"):
+        lines.append("# " + s["note"])
+    return lines

@@ -50,6 +50,15 @@ def family(case):
     return f + f" h {case['h'] * 1e3:g} mm" + (f" dt x{case['dt_frac']:g}" if case["dt_frac"] != 1.0 else "")
 
 
+def setting(case):
+    """The measured setting as deck keys (the report's recommendation)."""
+    return dict(case, timestep=time_step(case))
+
+
+def time_step(case):
+    return 2.5e-8 * (case["h"] / 5e-4) * case["dt_frac"]
+
+
 def strip(case, turned):
     h = case["h"]
     mat = deck.material()
@@ -68,7 +77,7 @@ def strip(case, turned):
     # lattices (rows at multiples of the row spacing from y = 0)
     yc = HS / 2 + 0.37 * h
     delta = case["ratio"] * h
-    dt = 2.5e-8 * (h / 5e-4) * case["dt_frac"]
+    dt = time_step(case)
     steps = int(round(T_END / dt))
     every = max(1, steps // 60)
     text += f"fix crack all pd/precrack segment -0.001 {yc!r} {A0!r} {yc!r}\n"

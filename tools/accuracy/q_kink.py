@@ -155,6 +155,11 @@ def family(case):
         (f" seed {case['seed']}" if "seed" in case else "")
 
 
+def setting(case):
+    """The measured setting as deck keys, the plate's size as a comment."""
+    return dict(case, h=H, recontact="none", note=f"crack length {case['n']} spacings")
+
+
 def plate(case):
     """The deck: plate, pre-crack, K-field grips, load steps; writes
     kink.dump (reference positions and damage growth) at the end."""

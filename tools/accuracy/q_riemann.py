@@ -41,6 +41,12 @@ def family(case):
     return f"m {case['m']:g}" + (f" dt x{case['dt_frac']:g}" if case["dt_frac"] != 1.0 else "")
 
 
+def setting(case):
+    """The measured setting as deck keys (the example's pair style)."""
+    return {"style": "pd/ordinary", "lattice": "square", "plane": "plane strain", "recontact": "any",
+            "h": DELTA / case["ratio"], "ratio": case["ratio"], "m": case["m"], "timestep": DT * case["dt_frac"]}
+
+
 def measure(case, lmp, workdir):
     text = open(os.path.join(deck.ROOT, "examples", "riemann-2d", "in.riemann")).read()
     text, n = re.subn(r"^dump.*\n", "", text, flags=re.M)

@@ -161,7 +161,7 @@ def main():
                 row["metrics"] = m
                 msg = f"{primary} {m[primary]:.4g}"
             except Exception as err:      # one failed case is reported, the sweep goes on
-                row["error"] = f"{type(err).__name__}: {err}"
+                row["error"] = report.scrub(f"{type(err).__name__}: {err}")
                 msg = "FAILED " + row["error"]
                 traceback.print_exc()
             rows.append(row)
