@@ -103,8 +103,9 @@ def cases(mode):
     # half the stable step; the step swept on one family (its time error is
     # below the nonlocal and lattice errors at every fraction). 3D: the
     # spacing sets the error (fixed box), so the finer one at 3 and 4
-    # spacings; 2D: the error is the constants' lattice error, much the
-    # same at both spacings, so the coarser one at 3 spacings only
+    # spacings; 2D: the finer spacing swept, the coarser one at 3 spacings
+    # only (on the square lattice the error is the constants' lattice
+    # error, the same at both spacings)
     infls = (None, "constant", "inverse", "tupek", "gaussian")
     for dim, lattices, coarse, fine in ((3, ("sc", "fcc"), 1e-3, 5e-4), (2, ("sq", "hex"), 5e-4, 2.5e-4)):
         for lattice in lattices:
