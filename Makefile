@@ -73,8 +73,10 @@ demo: configure
 bench: build
 	FULL=$(FULL) PASSES=$(PASSES) ./bench/run.sh $(LMP)
 
-# Accuracy against cost: the sweeps (about 3 hours on 2 cores), the report
-# with its Pareto plots and recommendation table in build/accuracy/report.md
+# Accuracy against cost: the full sweeps (about 16 minutes, one LAMMPS run at
+# a time), the report with its Pareto plots and, at its end, the
+# recommendation table (deck lines per quantity and target) in
+# build/accuracy/report.md
 accuracy: build
 	python3 tools/accuracy/run.py --mode full --lmp $(LMP) --exact $(BUILD_DIR)/pd_exact --out $(BUILD_DIR)/accuracy
 

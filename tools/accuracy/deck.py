@@ -16,6 +16,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 MATERIALS = os.path.join(ROOT, "potentials", "materials.pd")
 THICK = 1.0e-3            # 2D plate thickness (m)
+# Every deck states its neighbor settings: LAMMPS's defaults differ
+# between versions (the reneighboring delay) and units si's default skin
+# (1 mm) is several spacings here. The skin is a fraction of the spacing.
+SKIN = 0.2
+NEIGHBOR = "neighbor {skin} bin\nneigh_modify every 1 delay 0 check yes\n"
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
@@ -67,10 +72,10 @@ def header(lattice, h, boundary):
     """units, dimension, atom style and the lattice command."""
     dims, style, a_over_h, _ = LATTICES[base_lattice(lattice)]
     return ("units si\n" + ("dimension 2\n" if dims == 2 else "") +
-            f"boundary {boundary}\natom_style peri\natom_modify map array\n"
+            f"boundary {boundary}\natom_style peri\natom_modify map array\n" + NEIGHBOR.format(skin=repr(SKIN * h)) +
             # room for the families' neighbor lists: 6 spacings with
-            # partial-volume quadrature (cutoff past the horizon) and
-            # units si's default skin overflow LAMMPS's default of 2000
+            # partial-volume quadrature (cutoff past the horizon)
+            # overflow LAMMPS's default of 2000
             "neigh_modify one 8000 page 80000\n"
             f"lattice {style} {a_over_h * h!r}\n")
 
@@ -207,3 +212,56 @@ def accepts(lmp, workdir, pair_text, lattice="sc", h=1e-3):
         return True
     except (LammpsError, subprocess.TimeoutExpired):
         return False
+
+
+# ----------------------------------------------------------------------
+# The lines a user pastes into a deck for a measured setting: a is the
+# spacing (V^(1/d)), the horizon a number of spacings, the material's
+# constants as variables (${E}, ${nu}, ${Gc}, ${t} the plate thickness).
+
+LATTICE_LINE = {"sc": "lattice sc ${a}", "square": "lattice sq ${a}", "sq": "lattice sq ${a}",
+                "fcc": f"lattice fcc $({LATTICES['fcc'][2]:.6g}*a)",
+                "hex": f"lattice hex $({LATTICES['hex'][2]:.6g}*a)"}
+
+
+def user_lines(s):
+    """The deck lines of a setting dict (the keys of the accuracy cases:
+    style, lattice, plane, influence, strain, quadrature, recontact,
+    ratio, m or order, law, spacing or h, dt_fraction; timestep, note:
+    a comment line)."""
+    lines = []
+    a = s.get("spacing", s.get("h"))
+    if a:
+        lines.append(f"variable a equal {a:g}")
+    lat = s.get("lattice")
+    if lat:
+        base = base_lattice({"sq": "square"}.get(lat, lat))
+        lines.append(LATTICE_LINE[base] + ("  # particles moved at random by up to 0.2 a" if "jitter" in lat else ""))
+    style = s.get("style", "")
+    words = [f"pair_style {style}"]
+    if style == "pd/corr":
+        words.append(f"model elastic strain {s.get('strain', 'extended')}")
+    if s.get("influence") and style != "pd/bond":
+        words.append(f"influence {s['influence']}")
+    words.append(f"quadrature {s.get('quadrature') or 'point'}")
+    if s.get("recontact"):
+        words.append(f"recontact {s['recontact']}")
+    dims = dims_of({"sq": "square"}.get(lat, lat)) if lat else s.get("dim", 3)
+    if dims == 2:
+        words.append(f"{s.get('plane', 'plane stress')} thickness ${{t}}")
+    lines.append(" ".join(words))
+    coeff = "pair_coeff * * pmb E ${E}" if style == "pd/bond" else "pair_coeff * * E ${E} nu ${nu}"
+    coeff += f" horizon $({float(s['ratio'])!r}*a)"
+    m = s.get("m", s.get("order"))
+    if m is not None and style != "pd/bond":
+        coeff += f" m {m:g}"
+    if s.get("law"):
+        coeff += f" fail {s['law']} Gc ${{Gc}}"
+    lines.append(coeff)
+    if s.get("dt_fraction") is not None:
+        lines.append(f"fix dt all pd/timestep safety {s['dt_fraction']:g}")
+    if s.get("timestep"):
+        lines.append(f"timestep {s['timestep']:g}")
+    if s.get("note"):
+        lines.append("# " + s["note"])
+    return lines

@@ -1,11 +1,35 @@
 """report.md from results.json: per quantity the plots (error against
 cost per particle-step and against run time, one curve per setting family,
-the Pareto front marked) and a table of every setting; at the top the
-recommendation table (for each target error, the cheapest setting)."""
+the Pareto front marked) and a table of every setting; at the end the
+recommendation table (for each target error, the cheapest setting as the
+lines to paste into a deck)."""
+import importlib
 import os
+import re
 
+import deck
 import pareto
 import plot
+
+# a path of the machine the report ran on: an absolute one (kept: its
+# last part) or a build folder
+ABSOLUTE = re.compile(r"(?<![\w.$])/(?:[\w.+-]+/)+([\w.+-]+)")
+BUILD = re.compile(r"\bbuild[\w.-]*/")
+
+
+def scrub(text):
+    """text without the paths of the machine it was written on."""
+    return BUILD.sub("", ABSOLUTE.sub(r"\1", text))
+
+
+def paste(name, case):
+    """The deck lines of a measured case: the quantity module's
+    setting(case) when it has one (what its decks fix), else the case."""
+    try:
+        mod = importlib.import_module("q_" + name)
+    except ImportError:
+        mod = None
+    return deck.user_lines(mod.setting(case) if hasattr(mod, "setting") else case)
 
 
 def per_step(m):
@@ -49,7 +73,7 @@ def write(results, out_dir):
     plot.gnuplot()
     qs = results["quantities"]
     lines = [f"# Accuracy against cost: {results['mode']} mode", "",
-             f"{results.get('lammps', 'LAMMPS')} with this package; {results['date']}; one MPI rank on a machine shared with other "
+             f"{results.get('lammps', 'LAMMPS')} with this package; one MPI rank on a machine shared with other "
              "jobs (times are as measured, noisy to some 10-30%).", "",
              "Quadrature: `quadrature partial` is " +
              (f"swept for {', '.join(results['quadrature_partial'])}" if results.get("quadrature_partial")
@@ -57,15 +81,21 @@ def write(results, out_dir):
              "Cost: seconds of LAMMPS's Loop time per particle-step, or the wall time of the whole "
              "measurement (all its LAMMPS runs). Errors are relative (0.05 = 5%) unless the quantity says "
              "otherwise.", "",
-             "## Recommendations", "",
-             "For each target error, the cheapest measured setting that meets it (cost as the quantity's "
-             "plot ranks it; `-`: no measured setting meets it, and the most accurate one is shown).", "",
-             "| quantity | target | cheapest setting | error | cost |", "|---|---|---|---|---|"]
+             "The recommendations (the cheapest measured setting for each target error) are the "
+             "table at the end.", ""]
+    rec = ["## Recommendations", "",
+           "For each quantity and target error, the cheapest measured setting that meets it (cost as the "
+           "quantity's plot ranks it), as the lines to paste into a deck: `a` is the spacing (the cube, "
+           "in 2D the square, root of the volume or area per particle), `${E}`, `${nu}`, `${Gc}` and "
+           "`${t}` the material's constants and plate thickness. `not met`: no measured setting meets "
+           "the target, the most accurate one is shown.", "",
+           "| quantity | target | deck lines | error | cost |", "|---|---|---|---|---|"]
     sections = []
     for name, q in qs.items():
         rows = q["rows"]
         cost_kind = q.get("cost", "per_particle_step")
         unit = "s per particle-step" if cost_kind == "per_particle_step" else "s (run time)"
+        err_unit = " deg" if "degree" in q.get("error_unit", "") else ""
         pts = _points(rows, q["primary"], cost_kind)
         targets = q.get("targets") or pareto.TARGETS     # in the quantity's error unit
         groups = sorted({r.get("group", "") for _, _, r in pts})
@@ -74,13 +104,10 @@ def write(results, out_dir):
             gpts = [p for p in pts if p[2].get("group", "") == g]
             for t in targets:
                 best = pareto.cheapest(gpts, t)
-                if best:
-                    lines.append(f"| {label} | {t:g} | {setting_text(best[2]['case'])} | {best[1]:.3g} | "
-                                 f"{best[0]:.3g} {unit} |")
-                else:
-                    top = min(gpts, key=lambda p: p[1])
-                    lines.append(f"| {label} | {t:g} | - (most accurate measured: {setting_text(top[2]['case'])}) | "
-                                 f"{top[1]:.3g} | {top[0]:.3g} {unit} |")
+                pick = best or min(gpts, key=lambda p: p[1])
+                code = "<br>".join(f"`{line}`" for line in paste(name, pick[2]["case"]))
+                rec.append(f"| {label} | {t:g}{'' if best else ' not met'} | {code} | {pick[1]:.3g}{err_unit} | "
+                           f"{pick[0]:.3g} {unit} |")
         sec = [f"## {name}: {q['title']}", "", q.get("doc", ""), ""]
         if q.get("note"):
             sec += [q["note"], ""]
@@ -121,5 +148,5 @@ def write(results, out_dir):
         sections += [f"## {name}: skipped", "", why, ""]
     path = os.path.join(out_dir, "report.md")
     with open(path, "w") as f:
-        f.write("\n".join(lines + [""] + sections))
+        f.write(scrub("\n".join(lines + [""] + sections + rec + [""])))
     return path

@@ -14,9 +14,10 @@ docstring's first line, 'err' or PRIMARY below), family(case)
 (the curve of a case), group(case) (recommendations are made per group),
 COST ('per_particle_step', the default, or 'wall'), ERROR_UNIT and
 TARGETS (the target errors of the recommendations, in the error's unit;
-default pareto.TARGETS, relative errors) and QUADRATURE (True:
-the driver adds 'quadrature partial' copies of the cases when the binary
-accepts that pair_style keyword)."""
+default pareto.TARGETS, relative errors) and QUADRATURE (True, or a
+function of the case that says which: the driver adds 'quadrature
+partial' copies of the cases when the binary accepts that pair_style
+keyword)."""
 import argparse
 import csv
 import datetime
@@ -137,9 +138,11 @@ def main():
             results["skipped"][name] = why
             continue
         cases = mod.cases(a.mode)
-        if getattr(mod, "QUADRATURE", False):
+        quad = getattr(mod, "QUADRATURE", False)
+        if quad:
             cases += [dict(c, quadrature="partial") for c in cases
-                      if c.get("quadrature", "point") == "point" and c.get("style") in partial]
+                      if c.get("quadrature", "point") == "point" and c.get("style") in partial
+                      and (quad is True or quad(c))]
         rows = []
         q = {"title": title, "primary": primary, "cost": getattr(mod, "COST", "per_particle_step"),
              "error_unit": getattr(mod, "ERROR_UNIT", "relative error"),
@@ -158,7 +161,7 @@ def main():
                 row["metrics"] = m
                 msg = f"{primary} {m[primary]:.4g}"
             except Exception as err:      # one failed case is reported, the sweep goes on
-                row["error"] = f"{type(err).__name__}: {err}"
+                row["error"] = report.scrub(f"{type(err).__name__}: {err}")
                 msg = "FAILED " + row["error"]
                 traceback.print_exc()
             rows.append(row)

@@ -2,9 +2,12 @@
 (under 2 minutes on 2 cores), with the physics that is cheap to assert.
 
 Tooling: results.json holds every quantity with no failed case, a CSV per
-quantity, non-empty PNG plots, report.md with its recommendation table
-(a row per quantity and target) and a plot per quantity; without gnuplot
-the report step stops with a message naming gnuplot-nox.
+quantity, non-empty PNG plots, report.md with a plot per quantity and, at
+its end, the recommendation table (a row per quantity, group and target,
+each with the deck lines of its setting: pair_style, pair_coeff with the
+horizon in spacings); neither the report nor the CSVs name a path of the
+machine; without gnuplot the report step stops with a message naming
+gnuplot-nox.
 
 Physics (each with its reason):
 - pd/corr (extended strain) constants at 3 spacings: every mode within
@@ -35,6 +38,7 @@ Physics (each with its reason):
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -61,8 +65,17 @@ qs = res["quantities"]
 expected = {"constants", "fracture", "crack", "riemann", "kink"}
 check("results.json has every quantity", expected <= set(qs), " ".join(sorted(qs)))
 text = open(os.path.join(OUT, "report.md")).read()
-check("report.md has the recommendation table",
-      "| quantity | target | cheapest setting | error | cost |" in text)
+head = "| quantity | target | deck lines | error | cost |"
+check("report.md ends in the recommendation table",
+      head in text and "\n## " not in text[text.find("## Recommendations"):].lstrip("#"))
+rec = [l for l in text[text.find(head):].splitlines()[2:] if l.startswith("| ")]
+no_deck = [l.split(" | ")[0] for l in rec if not all(w in l for w in ("`pair_style pd/", "`pair_coeff * * ", "horizon $("))]
+check("every recommendation row has its deck lines (pair_style, pair_coeff, horizon in spacings)",
+      rec and not no_deck, f"{len(rec)} rows; without: {no_deck[:3]}")
+MACHINE = re.compile(r"/tmp/|/work/|/root/|/home/|\bbuild[\w.-]*/|" + re.escape(os.path.abspath(OUT)))
+for f in ["report.md"] + [f"{q}.csv" for q in sorted(qs)]:
+    found = MACHINE.findall(open(os.path.join(OUT, f)).read())
+    check(f"{f} names no path of this machine", not found, " ".join(sorted(set(found))[:3]))
 for name in sorted(qs):
     rows = qs[name]["rows"]
     check(f"{name}: every case measured", rows and all("metrics" in r for r in rows),
@@ -76,7 +89,7 @@ for name in sorted(qs):
             check(f"{name}: plot {os.path.basename(png)} is a non-empty PNG", ok)
             check(f"{name}: report shows {os.path.basename(png)}", f"]({os.path.basename(png)})" in text)
     groups = {r.get("group") for r in rows}
-    n_rec = sum(1 for l in text.splitlines() if l.startswith(f"| {name} | ") or l.startswith(f"| {name} ("))
+    n_rec = sum(1 for l in rec if l.startswith(f"| {name} | ") or l.startswith(f"| {name} ("))
     check(f"{name}: a recommendation row per target and group", n_rec == 4 * len(groups),
           f"{n_rec} rows, {len(groups)} group(s)")
 
