@@ -41,8 +41,13 @@ SRC
   echo "$sha256  $cache/dl/$orig" | sha256sum -c --quiet - >&2 \
     || { echo "fetch-lammps: checksum mismatch for $cache/dl/$orig" >&2; return 1; }
   rm -rf "$src.tmp" && mkdir -p "$src.tmp"
-  tar -xf "$cache/dl/$orig" -C "$src.tmp" --strip-components=1 || return 1
-  rm -rf "$src" && mv "$src.tmp" "$src"
+  tar -xf "$cache/dl/$orig" -C "$src.tmp" || return 1
+  # one top folder (the 2021 tarball) or the tree itself (the 2026 one)
+  local top="$src.tmp"
+  [ -d "$top/src" ] || top=$(find "$src.tmp" -mindepth 1 -maxdepth 1 -type d)
+  [ -d "$top/src" ] && [ -d "$top/cmake" ] \
+    || { echo "fetch-lammps: $orig holds no LAMMPS source tree (src/, cmake/)" >&2; return 1; }
+  rm -rf "$src" && mv "$top" "$src" && rm -rf "$src.tmp"
   touch "$src/.pdext-ok"
 }
 
