@@ -73,6 +73,10 @@ PairPD::PairPD(LAMMPS *lmp, const pd_coef *material_coefs, int ncoefs) :
   single_enable = 0;
   no_virial_fdotr_compute = 1;
   manybody_flag = 1;
+  // a test hook: the kernels' two ways must agree to the bit
+  // (unittest/lammps/test_kernels.py compares them)
+  const char *by_bond = getenv("PDEXT_BOND_BY_BOND");
+  bond_by_bond = by_bond && *by_bond && strcmp(by_bond, "0") != 0;
 }
 
 PairPD::~PairPD()
@@ -808,13 +812,14 @@ void PairPD::begin_evaluation(Evaluation &e)
   e.view = loop_view();
   e.tally = pd_tally{};
   e.tally.eatom = eflag_atom ? eatom : nullptr;
+  e.tally.skip_virial = !vflag_global;    // (per-atom virial is refused in tally())
   e.fails = failing();
   e.fail = e.fails ? failure_state() : pd_failure{};
   // one type: the kernels load none
   const int *type = atom->ntypes == 1 ? nullptr : atom->type;
   e.L = {&e.view, type, atom->ntypes + 1, atom->x[0], atom->vfrac, atom->f[0],
          evflag ? &e.tally : nullptr, e.fails ? &e.fail : nullptr, reactions(),
-         atom->nlocal + atom->nghost};
+         atom->nlocal + atom->nghost, bond_by_bond};
 }
 
 // The bonds as this style's loops walk them: the store's view, with the

@@ -158,6 +158,7 @@ class PairPD : public Pair, public PDFamilySource {
   FixPDBonds *bonds;
   int report_pending;       // print the setup report at the next compute
   bool had_families = false;    // a run of this style used built families
+  int bond_by_bond;        // PDEXT_BOND_BY_BOND set: no row in the vectorized pass (tests)
   double timed_since;      // MPI_Wtime at the start of the evaluation the report times (< 0: none)
   double *work;             // per-atom scratch, 2 doubles per atom
   int nwork;

@@ -45,7 +45,7 @@ static long evaluate(scene *sc, pd_fail_law law, pd_failure *fail)
   fail->params = law == PD_FAIL_LEGACY ? &params : NULL;
   fail->len0 = sc->len0;
   fail->note_atom = law == PD_FAIL_LEGACY ? sc->note : NULL;
-  const pd_loop L = {&v, NULL, 2, sc->x, l->vol, sc->f, NULL, fail, l->reaction, l->natoms};
+  const pd_loop L = {&v, NULL, 2, sc->x, l->vol, sc->f, NULL, fail, l->reaction, l->natoms, 0};
   pd_run_kernel(linear_kernels, &L, NULL);
   return fail->nbroken;
 }

@@ -266,7 +266,7 @@ static double estimate(const lattice *l, const model *m, const double *x, double
   const int n = l->natoms, dim = dimension(l);
   double *sum = calloc(n, sizeof(double));
   const pd_bond_view v = lattice_view(l);
-  const pd_loop L = {&v, l->type, 1, x, l->vol, NULL, NULL, NULL, NULL, 0};
+  const pd_loop L = {&v, l->type, 1, x, l->vol, NULL, NULL, NULL, NULL, 0, 0};
   if (m->ordinary) {
     /* k_i = N_i (2 mu_bar + d |lambda_bar|), N_i = d / m_i (as
      * PairPDOrdinary::stable_dt_sum); A, B of the current state */

@@ -2,16 +2,17 @@
 the bit.
 
 A row of bonds goes either through the vectorized first pass and the
-scalar scatter, or bond by bond: on steps that tally per-atom energy, and
-for rows with a broken or breaking bond. Both must do the same arithmetic
-in the same order. Each case runs three times from the same start: with
-per-atom energy (compute pe/atom) on every step (every row bond by bond),
-with the global energy and pressure on every step (rows in two passes,
-the tallies in the scalar one), and with thermo on the last step only.
-Positions, velocities and forces after 60 steps, as text with 17 digits,
-must be identical, and so must the first two runs' energy and virial
-(compute pressure NULL virial: the pressure's kinetic part would hide
-it) at every step. Bonds break during the runs (checked), so rows of both
+scalar scatter, or bond by bond: rows with a broken or breaking bond, and
+every row with the test hook PDEXT_BOND_BY_BOND=1. Both must do the same
+arithmetic in the same order. Each case runs four times from the same
+start: bond by bond with the global energy, the pressure and the per-atom
+energy (compute pe/atom) on every step; the same in two passes (the
+tallies in the scalar one); the global tallies alone in two passes; and
+with thermo on the last step only. Positions, velocities and forces after
+60 steps, as text with 17 digits, must be identical, and so must the
+first three runs' energy and virial (compute pressure NULL virial: the
+pressure's kinetic part would hide it) at every step, and the sum of the
+per-atom energies of the first two. Bonds break during the runs (checked), so rows of both
 kinds meet; partial quadrature gives rows of more than one chunk (64
 bonds); two atom types and random velocities (0.6 m/s) make every bond
 different.
@@ -73,35 +74,43 @@ run 0
 """
 
 
-# (thermo every, per-atom energy): bond by bond; chunked, tallied every
-# step; chunked, tallied at the end
-RUNS = [(1, True), (1, False), (60, False)]
+# (thermo every, per-atom energy, bond by bond): bond by bond, tallied
+# every step; chunked, the same; chunked, global tallies every step;
+# chunked, tallied at the end
+RUNS = [(1, True, True), (1, True, False), (1, False, False), (60, False, False)]
 
 for name, pair in CASES.items():
     tag = re.sub(r"[^A-Za-z0-9]+", "_", name)
-    dumps, broken, tallies = [], [], []
-    for every, per_atom in RUNS:
-        key = f"{tag}.{every}{'.atom' if per_atom else ''}"
+    dumps, broken, tallies, per_atom_sums = [], [], [], []
+    for every, per_atom, by_bond in RUNS:
+        key = f"{tag}.{every}{'.atom' if per_atom else ''}{'.bond' if by_bond else ''}"
+        MPI_ENV["PDEXT_BOND_BY_BOND"] = "1" if by_bond else "0"
         out, _ = run(deck(pair, every, key, per_atom), d, name=f"in.{key}")
         dumps.append(os.path.join(d, f"dump.{key}"))
         broken.append(int(log_value(out, r"pd/bonds: \d+ bonds kept, (\d+) of them broken")))
         # the timed run's thermo rows (before its Loop time line)
+        rows = thermo(out.split("Loop time")[0])
         tallies.append([tuple(r[k] for k in ["PotEng"] + [f"c_vir[{c}]" for c in range(1, 7)])
-                        for r in thermo(out.split("Loop time")[0])])
+                        for r in rows])
+        per_atom_sums.append([r["c_spa"] for r in rows] if per_atom else None)
+    MPI_ENV.pop("PDEXT_BOND_BY_BOND")
     total = int(log_value(out, r"pd/bonds: (\d+) bonds kept"))
     check(f"{name}: some bonds broke during the run, not all (so rows go both ways)",
           0 < broken[2] < total / 2, f"{broken[2]} of {total} broken")
-    check(f"{name}: the same bonds broke in the three runs", broken[0] == broken[1] == broken[2],
-          f"{broken}")
+    check(f"{name}: the same bonds broke in the four runs", len(set(broken)) == 1, f"{broken}")
     texts = [open(p).read() for p in dumps]
-    for r in (1, 2):
+    for r in (1, 2, 3):
         same = texts[0] == texts[r]
         check(f"{name}: positions, velocities and forces identical to the bit (run {r + 1} against "
               "bond by bond)", same,
               "" if same else f"max relative difference {max_rel_diff(read_dump(dumps[0]), read_dump(dumps[r])):.3g}")
-    check(f"{name}: energy and virial at each of the 61 steps identical to the bit, chunked and "
-          "bond by bond", len(tallies[0]) == 61 and tallies[0] == tallies[1],
-          f"{len(tallies[0])} rows; first difference "
-          f"{next(((a, b) for a, b in zip(tallies[0], tallies[1]) if a != b), None)}")
+    for r in (1, 2):
+        check(f"{name}: energy and virial at each of the 61 steps identical to the bit (run {r + 1} "
+              "against bond by bond)", len(tallies[0]) == 61 and tallies[0] == tallies[r],
+              f"{len(tallies[0])} rows; first difference "
+              f"{next(((a, b) for a, b in zip(tallies[0], tallies[r]) if a != b), None)}")
+    check(f"{name}: the per-atom energies' sum at each step identical to the bit, chunked and bond by bond",
+          len(per_atom_sums[0]) == 61 and per_atom_sums[0] == per_atom_sums[1],
+          f"first difference {next(((a, b) for a, b in zip(per_atom_sums[0], per_atom_sums[1]) if a != b), None)}")
 
 finish()

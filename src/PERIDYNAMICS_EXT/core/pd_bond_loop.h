@@ -340,12 +340,13 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
   for (int c = 0; noting && c < 4; c++) pd_note_max(row_note, pd_sum4_lane(rn, c));
 }
 
-/* Walks every bond once. Evaluations that tally per-atom energy and
- * directed materials go bond by bond (pd_force_bond); the others take each
- * row in chunks: the vectorized first pass, then the scalar sums onto i
- * and its (distinct) far ends, the failure law's notes and the energy and
- * virial tallies, in the same order and with the same arithmetic as bond
- * by bond. The far ends' sums (reaction, nall atoms, zero on entry) are
+/* Walks every bond once. Directed materials (and every material when
+ * bond_by_bond) go bond by bond (pd_force_bond); the others take each row
+ * in chunks: the vectorized
+ * first pass, then the scalar sums onto i and its (distinct) far ends, the
+ * failure law's notes and the energy (total and per atom) and virial
+ * tallies, in the same order and with the same arithmetic as bond by
+ * bond. The far ends' sums (reaction, nall atoms, zero on entry) are
  * added onto f last and zeroed as they are; the notes' maximum (their 4th
  * lane, -inf where none) then goes to pd_failure.note_atom, or for a law
  * that keeps only the largest note, that one to pd_failure.note_largest. */
@@ -356,11 +357,12 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                  void *restrict mat, pd_strain_fn strain, pd_force_fn force,
                  pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
                  pd_may_break_fn may_break, pd_law_notes_fn notes, int takes_notes,
-                 int weighted, int tallied, int failing, int kind)
+                 int weighted, int tallied, int failing, int kind, int bond_by_bond)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int directed = kind == PD_MATERIAL_DIRECTED, repeatable = kind == PD_MATERIAL_PLAIN;
-  const int chunked = !directed && !(tallied && tally->eatom);
+  const int chunked = !directed && !bond_by_bond;
+  double *restrict eatom = tallied ? tally->eatom : NULL;
   /* (a local: read through fail, it was loaded again after every
    * reaction store) */
   double *restrict note_atom = failing && takes_notes == PD_NOTES_ENDS ? fail->note_atom : NULL;
@@ -408,10 +410,16 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
          * pass ran 6% slower on tallied steps) */
         for (int k = 0; tallied && k < m; k++) {
           const int j = far[k];
-          const double vj = vol[j], tl = g[4 * PD_CHUNK + k];
+          const double vj = vol[j];
+          const double ei = g[5 * PD_CHUNK + k], ej = g[6 * PD_CHUNK + k];
+          tally->energy += ei * vj + ej * vi;
+          if (eatom) {
+            eatom[i] += ei * vj;
+            eatom[j] += ej * vi;
+          }
+          if (tally->skip_virial) continue;
           const double dij[3] = {-(x[3 * j] - xi[0]), -(x[3 * j + 1] - xi[1]), -(x[3 * j + 2] - xi[2])};
-          tally->energy += g[5 * PD_CHUNK + k] * vj + g[6 * PD_CHUNK + k] * vi;
-          pd_tally_virial(tally, dij, -tl * vi * vj);
+          pd_tally_virial(tally, dij, -g[4 * PD_CHUNK + k] * vi * vj);
         }
         continue;
       }
@@ -441,7 +449,7 @@ pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn forc
 {
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->reaction, L->nall, L->tally,
                    L->fail, mat, strain, force, breaks_now, breaks_after, may_break, notes,
-                   takes_notes, weighted, tallied, failing, kind);
+                   takes_notes, weighted, tallied, failing, kind, L->bond_by_bond);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */

@@ -89,16 +89,20 @@ void pd_intact_volume(const pd_bond_view *b, const double *vol, double *m);
  * energy: sum of per-atom energy densities (the PERI convention);
  * virial: sum of (x_i - x_j) (x) F_ij with F_ij = V_i V_j (force state),
  * a true force, so virial / box volume is a stress, as in PERI;
- * eatom: per-atom energy density over owned and ghost atoms, or NULL. */
+ * eatom: per-atom energy density over owned and ghost atoms, or NULL;
+ * skip_virial: the step asks for energies alone (compute pe/atom), the
+ * virial is left at zero. */
 typedef struct pd_tally {
   double energy;
   double virial[6];
   double *eatom;
+  int skip_virial;
 } pd_tally;
 
 /* Add a bond's virial, fpair being the force on i per unit (x_i - x_j). */
 static inline void pd_tally_virial(pd_tally *t, const double d[3], double fpair)
 {
+  if (t->skip_virial) return;
   t->virial[0] += d[0] * d[0] * fpair;
   t->virial[1] += d[1] * d[1] * fpair;
   t->virial[2] += d[2] * d[2] * fpair;
@@ -111,6 +115,7 @@ static inline void pd_tally_virial(pd_tally *t, const double d[3], double fpair)
  * x_i - x_j): the symmetric part of d (x) fv. */
 static inline void pd_tally_virial_pair(pd_tally *t, const double d[3], const double fv[3])
 {
+  if (t->skip_virial) return;
   t->virial[0] += d[0] * fv[0];
   t->virial[1] += d[1] * fv[1];
   t->virial[2] += d[2] * fv[2];

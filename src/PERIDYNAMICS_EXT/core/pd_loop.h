@@ -20,6 +20,8 @@ typedef struct pd_loop {
    * computed */
   double *reaction;
   int nall;                /* owned + ghost atoms */
+  int bond_by_bond;        /* every row bond by bond, none in the vectorized pass
+                              (tests compare the two ways' arithmetic) */
 } pd_loop;
 
 #endif
