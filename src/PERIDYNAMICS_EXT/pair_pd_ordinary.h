@@ -32,6 +32,11 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   const PDBondEnergies *bond_energies() const override { return this; }
   double family_norm(int i) const override { return norm(i); }
   pd_influence_kind influence_kind() const override { return (pd_influence_kind) influence; }
+  bool bond_moduli(int t, double &lambda, double &mu) const override
+  {
+    lambda = lambda_bar[t], mu = mu_bar[t];
+    return true;
+  }
 
  protected:
   int influence;       // pd_influence_kind

@@ -45,6 +45,10 @@ class PDBondEnergies {
  public:
   virtual double family_norm(int i) const = 0;    // N = d / m of atom i, m its calibrated weighted volume
   virtual pd_influence_kind influence_kind() const = 0;
+  // lambda and mu of type t's bond energy, w eps (A + B eps / 2) at each
+  // end with A = lambda N theta, B = 2 mu N (pd/ordinary's lambda_bar and
+  // mu_bar); false where the bond energy is not of that form
+  virtual bool bond_moduli(int /*t*/, double & /*lambda*/, double & /*mu*/) const { return false; }
 
  protected:
   // never deleted through this base: no virtual destructor, which the

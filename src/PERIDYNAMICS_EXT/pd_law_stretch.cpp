@@ -80,20 +80,25 @@ class LawStretch : public PDFailureLaw {
     else value(S0, i, j) = pd_coef_mixed(COEFS[S0].mix, value(S0, i, i), value(S0, j, j));
   }
 
-  // a bond-based material's bonds, broken at the critical stretch of its G_c
-  // calibrated on the family
+  // the bonds of a material whose critical stretch from G_c is calibrated
+  // on the family (setup_run)
   int release_kind(int t) const override
   {
-    return given(GC, t, t) && pair->bond_based() && !legacy_mode() ? PD_RELEASE_BOND_BASED : -1;
+    if (!given(GC, t, t) || legacy_mode()) return -1;
+    if (pair->bond_based()) return PD_RELEASE_BOND_BASED;
+    return ordinary(t) ? PD_RELEASE_ORDINARY_STRETCH : -1;
   }
 
-  // Per run: a bond-based solid's critical stretch from G_c calibrated on
-  // the types' complete families (core/pd_law_stretch.h
-  // pd_critical_stretch_factor: their median interior moment sum
-  // w V |xi|^2 and the material's stiffness scale), the mean of the two
-  // types' factors for a pair. An s0 given as such, legacy PERI, and
-  // state-based materials (whose bond energy is not the bond-based one the
-  // formula assumes) take s0 as it is.
+  // Per run: the critical stretch from G_c calibrated on the types'
+  // complete families (their median interior sums), as a factor on the
+  // continuum's s0, the mean of the two types' factors for a pair. A
+  // bond-based solid: its moment sum w V |xi|^2 and the material's
+  // stiffness scale (core/pd_law_stretch.h pd_critical_stretch_factor). An
+  // ordinary state-based solid: its weighted volume and moment sum
+  // w V |xi|, with the bond energy's moduli (pd_critical_stretch_ordinary;
+  // the continuum's s0 is the bond-based one, which releases 0.53-0.58 G_c
+  // in 3D and 0.86-0.97 in 2D there). An s0 given as such, legacy PERI, and
+  // correspondence (whose bond energy has neither form) take s0 as it is.
   void setup_run() override
   {
     const int n = atom->ntypes + 1;
@@ -104,6 +109,18 @@ class LawStretch : public PDFailureLaw {
       for (int t = 1; t < n; t++)
         factor[t] = pd_critical_stretch_factor(dim(), pair->horizon(t, t), pair->plate_thickness(),
                                                pair->stiffness_scale(t), complete[t]);
+    } else if (ordinary_any() && !legacy_mode()) {
+      std::vector<double> moment = pair->family_moments(1);
+      const std::vector<double> complete = pair->calibrate(moment.data());
+      const PDBondEnergies *m = pair->bond_energies();
+      const double kappa = pd_ordinary_dilatation_release(m->influence_kind(), dim());
+      for (int t = 1; t < n; t++) {
+        double lambda, mu;
+        if (!ordinary(t) || !m->bond_moduli(t, lambda, mu)) continue;
+        const double s0 = pd_critical_stretch_ordinary(dim(), table(GC)[t * n + t], lambda, mu, kappa,
+                                                       pair->complete_volume(t), complete[t]);
+        if (std::isfinite(s0)) factor[t] = s0 / table(S0)[t * n + t];
+      }
     }
     s0.assign((size_t) n * n, INFINITY);
     const double *given_s0 = table(S0);
@@ -125,11 +142,26 @@ class LawStretch : public PDFailureLaw {
     for (int t = 1; t < n; t++)
       if (given(GC, t, t))
         types += fmt::format(" type {} s0 {:.4g} (continuum {:.4g});", t, s0[t * n + t], table(S0)[t * n + t]);
-    if (!types.empty() && pair->bond_based() && !legacy_mode())
+    if (!types.empty() && (pair->bond_based() || ordinary_any()) && !legacy_mode())
       utils::logmesg(lmp, "{}: fail stretch from G_c, calibrated on the family:{}\n", style(), types);
   }
 
  private:
+  // type t's bonds store the ordinary solid's energy (pd/ordinary) and
+  // break by a G_c of their own
+  bool ordinary(int t) const
+  {
+    const PDBondEnergies *m = pair->bond_energies();
+    double lambda, mu;
+    return m && given(GC, t, t) && m->bond_moduli(t, lambda, mu) && mu > 0.0;
+  }
+  bool ordinary_any() const
+  {
+    for (int t = 1; t <= atom->ntypes; t++)
+      if (ordinary(t)) return true;
+    return false;
+  }
+
   pd_law_stretch params;
   std::vector<double> factor;    // per type: s0 from G_c calibrated on its complete family over the continuum's
   std::vector<double> s0;        // per type pair: the critical stretch of the run

@@ -16,6 +16,52 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* kappa of pd_ordinary_dilatation_release, by another method: random
+ * bonds in the unit ball (the half pointing across the plane n = z), and
+ * for each depth z and each crossing bond the dilatation of its end summed
+ * bond by bond over the crossing bonds that break later (O(n^2), no
+ * sorting), averaged over random depths. */
+static double kappa_monte_carlo(pd_influence_kind kind, int dim, int n, unsigned seed)
+{
+  double *r = malloc(sizeof(double) * n), *c = malloc(sizeof(double) * n), *w = malloc(sizeof(double) * n);
+  srand(seed);
+  double m = 0.0;
+  int k = 0, drawn = 0;
+  while (k < n) {
+    double p[3] = {0.0, 0.0, 0.0}, rr = 0.0;
+    for (int a = 0; a < dim; a++) {
+      p[a] = 2.0 * rand() / RAND_MAX - 1.0;
+      rr += p[a] * p[a];
+    }
+    if (rr > 1.0 || rr == 0.0) continue;
+    drawn++;
+    const double len = sqrt(rr), wk = pd_influence(kind, dim, len, 1.0);
+    m += wk;
+    if (p[dim - 1] <= 0.0) continue;
+    r[k] = len, c[k] = p[dim - 1] / len, w[k] = wk;
+    k++;
+  }
+  /* per unit ball volume: m = (sum w) / drawn; N = d / m */
+  m /= drawn;
+  const double half = (double) n / drawn; /* the share of draws kept */
+  double across = 0.0, sum = 0.0;
+  for (int b = 0; b < n; b++) across += w[b] * r[b] * c[b];
+  const int nz = 200;
+  for (int q = 0; q < nz; q++) {
+    const double z = (q + 0.5) / nz;
+    for (int b = 0; b < n; b++) {
+      if (r[b] * c[b] <= z) continue;
+      const double u = r[b] / c[b];
+      double later = 0.0;
+      for (int e = 0; e < n; e++)
+        if (r[e] * c[e] > z && r[e] / c[e] >= u) later += w[e] * c[e] / r[e];
+      sum += w[b] * (dim / m) * u * later * half / n / nz;
+    }
+  }
+  free(r), free(c), free(w);
+  return sum / across;
+}
+
 int main(void)
 {
   const double delta = 0.0055, Gc = 400.0; /* PMMA, T14 6.2.1 */
@@ -38,6 +84,28 @@ int main(void)
   /* critical stretch from G_c, MS07 eq. 29 in 3D */
   check_rel("3D s0 = sqrt(5 G / (9 K delta))", pd_critical_stretch(3, 0, 3.0e9, 0.25, 1e-3, 100.0),
             sqrt(5.0 * 100.0 / (9.0 * 2.0e9 * 1e-3)), 1e-14);
+  /* the dilatation's share of the energy an ordinary solid's bonds release
+   * at the critical stretch: the grid against random bonds (1500: a
+   * sampling error of about 2%) */
+  {
+    const pd_influence_kind kinds[] = {PD_INFLUENCE_CONSTANT, PD_INFLUENCE_INVERSE};
+    for (int q = 0; q < 2; q++)
+      for (int dim = 2; dim <= 3; dim++) {
+        char what[160];
+        snprintf(what, sizeof what, "ordinary stretch law, %dD %s: the dilatation part of the release (kappa) "
+                 "on the grid agrees with random bonds (5%%)", dim, pd_influence_name(kinds[q]));
+        check_rel(what, pd_ordinary_dilatation_release(kinds[q], dim), kappa_monte_carlo(kinds[q], dim, 1500, 7),
+                  0.05);
+      }
+    /* with lambda = 0 the calibration is the B part alone: the released
+     * energy averaged over orientations, 2 mu N s0^2 <cos+> moment1, is G_c */
+    const double mu = 3e9, mvol = 2e-9, moment1 = 3e-12, s0 = pd_critical_stretch_ordinary(3, Gc, 0.0, mu, 0.26, mvol, moment1);
+    check_rel("ordinary stretch law: bonds broken at s0 release G_c on average (lambda = 0)",
+              2.0 * mu * (3.0 / mvol) * s0 * s0 * 0.25 * moment1, Gc, 1e-12);
+    const double s1 = pd_critical_stretch_ordinary(3, Gc, 1.5e9, mu, 0.26, mvol, moment1);
+    check_rel("ordinary stretch law: the dilatation part (1 + kappa lambda / mu) lowers s0^2 by itself",
+              s0 * s0 / (s1 * s1), 1.0 + 0.26 * 0.5, 1e-12);
+  }
 
   /* The instantaneous bond energy (T14 eq. 6.5): the derivative of the
    * total energy with respect to a bond's weight, at fixed normalization,

@@ -3,6 +3,7 @@
 #include "pd_macros.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 double pd_critical_stretch(int dim, int plane_strain, double E, double nu, double delta, double Gc)
 {
@@ -12,6 +13,71 @@ double pd_critical_stretch(int dim, int plane_strain, double E, double nu, doubl
   }
   if (plane_strain) return sqrt(5.0 * PD_PI * Gc / (12.0 * E * delta));
   return sqrt(4.0 * PD_PI * Gc / (9.0 * E * delta));
+}
+
+double pd_critical_stretch_ordinary(int dim, double Gc, double lambda, double mu, double kappa,
+                                    double weighted_volume, double moment1)
+{
+  const double share = 1.0 + kappa * lambda / mu;
+  if (!(mu > 0.0) || !(weighted_volume > 0.0) || !(moment1 > 0.0) || !(share > 0.0)) return NAN;
+  const double mean_cos = dim == 3 ? 0.25 : 1.0 / PD_PI;
+  return sqrt(Gc * weighted_volume / (2.0 * mu * dim * mean_cos * moment1 * share));
+}
+
+typedef struct crossing_bond {
+  double opening;    /* u at which it breaks, s0 = delta = 1: |xi| / cos */
+  double normal;     /* xi.n = |xi| cos */
+  double weight;     /* omega dV */
+  double strain;     /* strain per unit opening: cos / |xi| */
+} crossing_bond;
+
+static int by_opening(const void *a, const void *b)
+{
+  const double x = ((const crossing_bond *) a)->opening, y = ((const crossing_bond *) b)->opening;
+  return (x > y) - (x < y);
+}
+
+double pd_ordinary_dilatation_release(pd_influence_kind kind, int dim)
+{
+  /* midpoint grid over the bonds pointing across (cos > 0): |xi| in
+   * (0, 1], the angle to n in [0, pi/2) (3D: dV = 2 pi r^2 dr dcos; 2D:
+   * r dr dphi over both sides of n) */
+  enum { NR = 160, NA = 160, NZ = 64 };
+  crossing_bond *bond = malloc(sizeof(crossing_bond) * NR * NA);
+  if (!bond) return NAN;
+  double m = 0.0, across = 0.0;
+  int n = 0;
+  for (int k = 0; k < NR; k++) {
+    const double r = (k + 0.5) / NR, w = pd_influence(kind, dim, r, 1.0);
+    for (int l = 0; l < NA; l++) {
+      double c, dv;
+      if (dim == 3) {
+        c = (l + 0.5) / NA;
+        dv = 2.0 * PD_PI * r * r / (NR * NA);
+      } else {
+        c = cos(-0.5 * PD_PI + PD_PI * (l + 0.5) / NA);
+        dv = r * PD_PI / (NR * NA);
+      }
+      m += 2.0 * w * dv; /* the half pointing away counts the same */
+      across += w * dv * r * c;
+      bond[n++] = (crossing_bond){r / c, r * c, w * dv, c / r};
+    }
+  }
+  qsort(bond, (size_t) n, sizeof *bond, by_opening);
+  /* at depth z, each crossing bond at its own breaking opening u sees the
+   * crossing bonds that break later (itself included) at strain u c / r */
+  double sum = 0.0;
+  for (int q = 0; q < NZ; q++) {
+    const double z = (q + 0.5) / NZ;
+    double later = 0.0;
+    for (int b = n - 1; b >= 0; b--)
+      if (bond[b].normal > z) {
+        later += bond[b].weight * bond[b].strain;
+        sum += bond[b].weight * (dim / m) * bond[b].opening * later / NZ;
+      }
+  }
+  free(bond);
+  return sum / across;
 }
 
 double pd_critical_stretch_factor(int dim, double delta, double thickness, double stiffness, double moment2)

@@ -6,6 +6,7 @@
 #define PD_LAW_STRETCH_H
 
 #include "pd_failure.h"
+#include "pd_influence.h"
 
 typedef struct pd_law_stretch {
   const double *s0;    /* per type pair (+inf: the pair does not fail) */
@@ -67,5 +68,29 @@ double pd_critical_stretch(int dim, int plane_strain, double E, double nu, doubl
  * returns for moment2 = sum w V |xi|^2 (pd_family_moment of power 2); 1 for
  * a family without bonds. */
 double pd_critical_stretch_factor(int dim, double delta, double thickness, double stiffness, double moment2);
+
+/* The critical stretch of an ordinary state-based solid (pd_ordinary.h),
+ * calibrated on a family as the energy law is: a bond broken at strain s0
+ * releases at its two ends w s0 (A + B s0 / 2) each, B = 2 mu N, N = d / m,
+ * A = lambda N theta. The B part is 2 mu N w s0^2 per unit partner volume,
+ * across planes of every orientation, on average, 2 mu N s0^2 <cos+>
+ * sum w V |xi| per unit area; the A part adds kappa lambda / mu of that
+ * (pd_ordinary_dilatation_release). So
+ * s0 = sqrt(G_c m / (2 mu d <cos+> moment1 (1 + kappa lambda / mu))), m the
+ * weighted volume sum w V and moment1 = sum w V |xi| (pd_family_moment of
+ * power 1); NaN for a family without bonds, mu <= 0 or a released energy
+ * that would not be positive. */
+double pd_critical_stretch_ordinary(int dim, double Gc, double lambda, double mu, double kappa,
+                                    double weighted_volume, double moment1);
+
+/* kappa: what the dilatation's part of the released energy adds, per unit
+ * lambda / mu, when two half-spaces of the continuum are pulled apart
+ * rigidly (the separation that defines G_c): a bond crossing the plane
+ * breaks at the opening u where its strain u (xi.n) / |xi|^2 reaches s0;
+ * then the dilatation of each end, at depth z, is N sum w eps V over its
+ * crossing bonds still intact. Integrated over z, the bonds and their
+ * order of breaking on a grid (0.26 in 3D and 0.20 in 2D with omega = 1;
+ * independent of s0 and delta). */
+double pd_ordinary_dilatation_release(pd_influence_kind kind, int dim);
 
 #endif

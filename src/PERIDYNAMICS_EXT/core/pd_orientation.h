@@ -20,7 +20,10 @@ typedef enum pd_release_kind {
   /* a bond-based pair broken at the critical stretch calibrated on this
    * family averaged over orientations (pd_critical_stretch_factor):
    * phi ~ w |xi| */
-  PD_RELEASE_BOND_BASED
+  PD_RELEASE_BOND_BASED,
+  /* an ordinary state-based pair broken at the critical stretch
+   * calibrated on this family (pd_critical_stretch_ordinary): phi ~ w */
+  PD_RELEASE_ORDINARY_STRETCH
 } pd_release_kind;
 
 /* G(n) / G_c across a plane of unit normal n, for a complete family f
