@@ -32,11 +32,13 @@ def with_neighbor_defaults(script):
     return NEIGHBOR_DEFAULTS + script
 
 
-def run(script, cwd, ranks=1, expect_error=False, variables=None, name="in.test"):
-    """Run an input script; returns (stdout+stderr, thermo rows of the last run)."""
+def run(script, cwd, ranks=1, expect_error=False, variables=None, name="in.test", as_is=False):
+    """Run an input script; returns (stdout+stderr, thermo rows of the last run).
+    as_is: exactly as given (a deck users copy runs with their LAMMPS's
+    defaults), else led by NEIGHBOR_DEFAULTS."""
     path = os.path.join(cwd, name)
     with open(path, "w") as f:
-        f.write(with_neighbor_defaults(script))
+        f.write(script if as_is else with_neighbor_defaults(script))
     cmd = [LMP, "-in", name, "-echo", "none", "-log", name + ".log"]
     for k, v in (variables or {}).items():
         cmd += ["-var", k, str(v)]
