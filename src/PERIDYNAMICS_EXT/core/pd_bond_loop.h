@@ -342,11 +342,10 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
 
 /* Walks every bond once. Directed materials (and every material when
  * bond_by_bond) go bond by bond (pd_force_bond); the others take each row
- * in chunks: the vectorized
- * first pass, then the scalar sums onto i and its (distinct) far ends, the
- * failure law's notes and the energy (total and per atom) and virial
- * tallies, in the same order and with the same arithmetic as bond by
- * bond. The far ends' sums (reaction, nall atoms, zero on entry) are
+ * in chunks: the vectorized first pass, then the scalar sums onto i and
+ * its (distinct) far ends, the failure law's notes and the energy (total
+ * and per atom) and virial tallies, in the same order and with the same
+ * arithmetic as bond by bond. The far ends' sums (reaction, nall atoms, zero on entry) are
  * added onto f last and zeroed as they are; the notes' maximum (their 4th
  * lane, -inf where none) then goes to pd_failure.note_atom, or for a law
  * that keeps only the largest note, that one to pd_failure.note_largest. */
