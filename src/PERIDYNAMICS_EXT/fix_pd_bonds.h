@@ -196,6 +196,7 @@ class FixPDBonds : public Fix {
   void guard_drift(double *vc);
   std::string guard_energy(double ke);
   std::string blow_up(int i, const char *what, double value);
+  Fix *relaxation() const;
   bigint damaged;           // stored bond records found damaged (restart, exchange)
   bigint damaged_example;   // the count one of them claimed
   void check_identities();

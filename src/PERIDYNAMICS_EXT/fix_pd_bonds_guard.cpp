@@ -47,8 +47,7 @@ constexpr int GEOMETRIC_WINDOWS = 3;
 void FixPDBonds::setup(int)
 {
   guard_step = serving ? 0.5 * spec.smallest : INFINITY;
-  guard_relaxing = false;
-  for (Fix *fix : PDCompat::fixes(modify)) guard_relaxing = guard_relaxing || strcmp(fix->style, "pd/adr") == 0;
+  guard_relaxing = relaxation() != nullptr;
   guard_ke = -1.0;    // set by the first check
   guard_window = 0;
   guard_streak = 0;
@@ -166,6 +165,14 @@ std::string FixPDBonds::guard_energy(double ke)
                      update->dt, update->dt / stable, stable, stable_dt);
 }
 
+// The run's pseudo-time relaxation (fix pd/adr), or null.
+Fix *FixPDBonds::relaxation() const
+{
+  for (Fix *fix : PDCompat::fixes(modify))
+    if (strcmp(fix->style, "pd/adr") == 0) return fix;
+  return nullptr;
+}
+
 // What went wrong where; a bond of zero length at this rank is the usual
 // cause of a non-finite force (strain order m <= 0: log 0).
 std::string FixPDBonds::blow_up(int i, const char *what, double value)
@@ -191,11 +198,10 @@ std::string FixPDBonds::blow_up(int i, const char *what, double value)
                                    above ? ": reduce it, or" : ", but the state stiffened since (compression "
                                    "with strain order m <= 0, contact springs, pushing broken bonds)");
   // a relaxation in pseudo time has no time step to blame
-  for (Fix *fix : PDCompat::fixes(modify))
-    if (strcmp(fix->style, "pd/adr") == 0)
-      likely = fmt::format("the relaxation of fix {} (pd/adr) is unstable: its fictitious density is "
-                           "too small for the stiffness now (raise its safety, or lower its every)",
-                           fix->id);
+  if (const Fix *fix = relaxation())
+    likely = fmt::format("the relaxation of fix {} (pd/adr) is unstable: its fictitious density is "
+                         "too small for the stiffness now (raise its safety, or lower its every)",
+                         fix->id);
   return fmt::format("Fix pd/bonds: the run is unstable at step {}: atom {} at ({:.6g}, {:.6g}, "
                      "{:.6g}) has {} {:.6g}{}. {}Likely cause: {}",
                      update->ntimestep, atom->tag[i], x[i][0], x[i][1], x[i][2], what, value,

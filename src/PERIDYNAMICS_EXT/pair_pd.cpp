@@ -1076,9 +1076,18 @@ double PairPD::current_stable_dt()
   const int nall = atom->nlocal + atom->nghost;
   std::vector<double> current(nall), closing(nall);
   current_stiffness_sums(current.data(), closing.data());
+  return smallest_stable_dt(current.data());
+}
+
+// The smallest stable step (MS07 eq. 43) over the owned atoms for their
+// stiffness sums (collective). LAMMPS integrates a = ftm2v f / m: in metal,
+// real, electron units the stiffness acts scaled by ftm2v (1 in si, cgs,
+// lj, micro, nano).
+double PairPD::smallest_stable_dt(const double *stiffness) const
+{
   double mine = INFINITY, all;
   for (int i = 0; i < atom->nlocal; i++)
-    mine = MIN(mine, pd_stable_dt(atom->rmass[i], force->ftm2v * current[i]));
+    mine = MIN(mine, pd_stable_dt(atom->rmass[i], force->ftm2v * stiffness[i]));
   MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_MIN, world);
   return all;
 }
@@ -1109,13 +1118,7 @@ void PairPD::report_setup()
   for (int i = 0; i < nall; i++) work[i] = 0.0;
   stable_dt_sum(work);
   bonds->sum_to_owners(work);
-  double dtmin = INFINITY;
-  // LAMMPS integrates a = ftm2v f / m: in metal, real, electron units the
-  // stiffness acts scaled by ftm2v (1 in si, cgs, lj, micro, nano)
-  for (int i = 0; i < atom->nlocal; i++)
-    dtmin = MIN(dtmin, pd_stable_dt(atom->rmass[i], force->ftm2v * work[i]));
-  double dt;
-  MPI_Allreduce(&dtmin, &dt, 1, MPI_DOUBLE, MPI_MIN, world);
+  const double dt = smallest_stable_dt(work);
   dt_estimate = dt;
   bonds->note_stable_dt(dt);    // for the blow-up guard's message
   if (comm->me == 0) {

@@ -258,6 +258,7 @@ class PairPD : public Pair, public PDFamilySource {
   void declare_fields();
   void tally(const pd_tally &t);
   void report_setup();
+  double smallest_stable_dt(const double *stiffness) const;    // collective
   double family_key() const;
   void check_failure(int i, int j);   // the type pair's failure law and its values
   // What one force evaluation works on: the bonds, the tally the step asks
