@@ -28,10 +28,10 @@ BLOCK_STEPS = 200
 # Every style of the block, in the order of one pass (bench/pairs/<style>.in)
 # (each effect next to its baseline, so that the two see about the same load)
 BLOCK_STYLES = [
-    "peri_pmb", "pd_bond", "pd_bond_fail_stretch", "pd_bond_contact", "pd_bond_peratom", "pd_bond_microplastic",
+    "peri_pmb", "pd_bond", "pd_bond_fail_stretch", "pd_bond_contact", "pd_bond_peratom", "pd_bond_no_directional", "pd_bond_microplastic",
     "pd_bond_legacy", "pd_bond_legacy_fail", "pd_bond_legacy_fail_alpha",
     "peri_lps", "pd_ordinary", "pd_ordinary_fail_stretch", "pd_ordinary_fail_energy",
-    "pd_ordinary_contact", "pd_ordinary_peratom", "pd_ordinary_m0", "pd_ordinary_m-1", "pd_ordinary_legacy",
+    "pd_ordinary_contact", "pd_ordinary_peratom", "pd_ordinary_no_directional", "pd_ordinary_m0", "pd_ordinary_m-1", "pd_ordinary_legacy",
     "pd_corr_classical", "pd_corr_j2", "pd_corr_extended",
 ]
 # The legacy styles have no bond count of their own in the log (PERI prints
@@ -59,6 +59,8 @@ EFFECTS = [
     ("contact", "pd_ordinary_contact", "pd_ordinary", 1.05),
     ("per-atom energy", "pd_bond_peratom", "pd_bond", 1.1),
     ("per-atom energy", "pd_ordinary_peratom", "pd_ordinary", 1.1),
+    ("directional correction", "pd_bond", "pd_bond_no_directional", None),
+    ("directional correction", "pd_ordinary", "pd_ordinary_no_directional", None),
     ("plasticity", "pd_bond_microplastic", "pd_bond", None),
     ("plasticity", "pd_corr_j2", "pd_corr_classical", None),
     ("correspondence", "pd_corr_classical", "pd_ordinary", None),
@@ -338,11 +340,11 @@ def print_effects(best):
     print("Cost of each effect (time with the effect / time of the baseline: the smallest passes;")
     print("median = median of the ratios within each pass, listed in brackets, on which the bars are")
     print("judged; elastic run, no bond breaks)")
-    print(f"  {'effect':16s} {'style':26s} {'baseline':20s} {'cost':>7s} {'median':>7s}")
+    print(f"  {'effect':22s} {'style':26s} {'baseline':20s} {'cost':>7s} {'median':>7s}")
     for effect, style, base, bar in EFFECTS:
         if style in best and base in best:
             ratio, med = timed(best[style]) / timed(best[base]), median_ratio(best[style], best[base])
-            print(f"  {effect:16s} {style:26s} {base:20s} {ratio:6.2f}x {med:6.2f}x   "
+            print(f"  {effect:22s} {style:26s} {base:20s} {ratio:6.2f}x {med:6.2f}x   "
                   f"{mark(med, bar, False):24s} ({per_pass(best[style], best[base])})")
     for style, rec in best.items():
         if rec["contact_nb"] is not None:

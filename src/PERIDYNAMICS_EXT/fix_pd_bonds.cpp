@@ -37,8 +37,8 @@ static constexpr double MAX_INTACT_LENGTH = 11.0;    // stretch 10: no material 
 
 FixPDBonds::FixPDBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), serving(false), built_tag(nullptr), use_weights(0), nhistory(0), built(0),
-    maxpartner(1), nrows(0), nowned(0), npartner(nullptr), partner(nullptr), r0(nullptr), weight(nullptr),
-    history(nullptr), far(nullptr), nlost_local(0), intact_at_map(-1), stored_total(0),
+    weights_fresh(false), maxpartner(1), nrows(0), nowned(0), npartner(nullptr), partner(nullptr), r0(nullptr),
+    weight(nullptr), history(nullptr), far(nullptr), nlost_local(0), intact_at_map(-1), stored_total(0),
     nlost_reported(0), warned_images(0), family_key(0.0), record(lmp), stable_dt(0.0), comm_array(nullptr),
     comm_width(1), comm_max(0), idissipated(-1), ifamily_volume(-1), iweighted_volume(-1), ibuild_volume(-1),
     fields_from_file(false), guard_step(INFINITY), guard_ke(0.0), guard_ke_step(0), guard_window(0), guard_streak(0), guard_relaxing(false), damaged(0), damaged_example(0)
@@ -739,6 +739,39 @@ int FixPDBonds::maxsize_restart()
   return per_atom_max(PDField::RESTART) + 2;
 }
 
+// bond k of atom i in the reference configuration (minimum image)
+void FixPDBonds::reference_vector(int i, int k, double xi[3]) const
+{
+  double **x0 = atom->x0;
+  const int j = far[i][k];
+  for (int d = 0; d < 3; d++) xi[d] = x0[j][d] - x0[i][d];
+  PDCompat::minimum_image(domain, xi);
+}
+
+void FixPDBonds::each_reference_bond(const std::function<void(int, int, const double *, double)> &visit) const
+{
+  for (int i = 0; i < nowned; i++)
+    for (int k = 0; k < npartner[i]; k++) {
+      double xi[3];
+      reference_vector(i, k, xi);
+      visit(i, far[i][k], xi, use_weights ? weight[i][k] : 1.0);
+    }
+}
+
+void FixPDBonds::scale_weights(const std::function<double(int, int, const double *)> &factor)
+{
+  if (!use_weights || !weights_fresh)
+    error->all(FLERR, "Fix pd/bonds: bond weights scaled twice or without weights (a bug)");
+  for (int i = 0; i < nowned; i++)
+    for (int k = 0; k < npartner[i]; k++) {
+      double xi[3];
+      reference_vector(i, k, xi);
+      weight[i][k] *= factor(i, far[i][k], xi);
+    }
+  weights_fresh = false;
+  reference_sums();
+}
+
 bigint FixPDBonds::cut_crossing(const pd_crack &crack, int groupbit)
 {
   double **x0 = atom->x0;
@@ -748,8 +781,8 @@ bigint FixPDBonds::cut_crossing(const pd_crack &crack, int groupbit)
     for (int k = 0; k < npartner[i]; k++) {
       const int j = far[i][k];
       if (r0[i][k] < 0.0 || !(mask[i] & groupbit) || !(mask[j] & groupbit)) continue;
-      double d[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-      PDCompat::minimum_image(domain, d);
+      double d[3];
+      reference_vector(i, k, d);
       const double q[3] = {x0[i][0] + d[0], x0[i][1] + d[1], x0[i][2] + d[2]};
       if (pd_crack_crosses(&crack, x0[i], q)) {
         r0[i][k] = -r0[i][k];

@@ -17,6 +17,7 @@ FixStyle(pd/bonds,FixPDBonds);
 #include "pd_family_spec.h"
 #include "pd_fracture_record.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,15 @@ class FixPDBonds : public Fix {
   PDFractureRecord &fracture() { return record; }
   const PDFractureRecord &fracture() const { return record; }
   bigint local_lost() const { return nlost_local; }
+  // Every bond (broken or not) in the reference configuration: owner i,
+  // far end j (local or ghost), reference vector xi = x0_j - x0_i, weight.
+  void each_reference_bond(const std::function<void(int, int, const double *, double)> &visit) const;
+  // The weights as the family spec gave them at the build, before anyone
+  // scaled them (false for families from a restart file: scaled already).
+  bool weights_as_built() const { return weights_fresh; }
+  // Multiplies every bond's weight by factor(i, j, xi) once, and the
+  // reference sums (weighted volumes) follow.
+  void scale_weights(const std::function<double(int, int, const double *)> &factor);
   // the stable time step estimate of this run, for the blow-up guard's message
   void note_stable_dt(double dt) { stable_dt = dt; }
 
@@ -127,6 +137,7 @@ class FixPDBonds : public Fix {
   int use_weights;         // 1 if bonds carry a quadrature weight
   int nhistory;            // history values per bond (e.g. plastic stretch)
   int built;               // families exist (set once, kept by restart)
+  bool weights_fresh;      // weights as built, not scaled yet (weights_as_built)
   int maxpartner;          // row length of the per-atom bond tables
   int nrows;               // rows of the bond tables: owned atoms only (see grow_rows)
   int nowned;              // atoms whose local indices are current
@@ -202,6 +213,7 @@ class FixPDBonds : public Fix {
   void check_identities();
   void check_volumes();
   void reference_sums();
+  void reference_vector(int i, int k, double xi[3]) const;
   void remove_bond(int i, int k);
   void resize_tables(int rowlength);
   void shorten_rows(int rowlength);

@@ -359,6 +359,7 @@ void FixPDBonds::build_families()
     error->all(FLERR, "Fix pd/bonds: two atoms share a reference position (x0); peridynamic "
                "bonds need distinct positions");
   built = 1;
+  weights_fresh = use_weights != 0;
   map_partners(true, true);
   reference_sums();
   double *built_volume = field(ibuild_volume);

@@ -30,6 +30,7 @@
 
 extern "C" {
 #include "pd_contact.h"
+#include "pd_directional.h"
 #include "pd_influence.h"
 #include "pd_material_file.h"
 #include "pd_quadrature.h"
@@ -190,6 +191,7 @@ void PairPD::settings(int narg, char **arg)
   legacy = 0;
   recontact = RECONTACT_NEAR;
   quadrature = -1;    // not given: the style's default, below
+  directional = -1;    // not given: yes where the style offers it, except legacy
   model_dim = PD_3D;
   thickness = 0.0;
   const std::string style = style_name();
@@ -218,6 +220,14 @@ void PairPD::settings(int narg, char **arg)
       iarg += 2;
       continue;
     }
+    if (strcmp(arg[iarg], "directional_correction") == 0) {
+      const char *yes = iarg + 1 < narg ? arg[iarg + 1] : "";
+      if (strcmp(yes, "yes") == 0) directional = 1;
+      else if (strcmp(yes, "no") == 0) directional = 0;
+      else error->all(FLERR, "Pair style {}: 'directional_correction {}': expected yes or no", style, yes);
+      iarg += 2;
+      continue;
+    }
     if (strcmp(arg[iarg], "plane") == 0 || strcmp(arg[iarg], "thickness") == 0) {
       if (domain->dimension != 2)
         error->all(FLERR, "Pair style {}: '{}' is a 2D option (dimension 2)", style, arg[iarg]);
@@ -241,6 +251,14 @@ void PairPD::settings(int narg, char **arg)
   if (legacy && partial_volumes())
     error->all(FLERR, "Pair style {}: 'quadrature partial' and 'legacy' do not go together: legacy "
                "reproduces PERI, which has its own partial volumes; drop one of them", style);
+  int power;
+  if (directional < 0) directional = directional_moment(power) && !legacy;
+  if (directional && !directional_moment(power))
+    error->all(FLERR, "Pair style {}: 'directional_correction' is for pd/bond and pd/ordinary ({} is exact on "
+               "any family with 'strain extended')", style, style);
+  if (directional && legacy)
+    error->all(FLERR, "Pair style {}: 'directional_correction' and 'legacy' do not go together: legacy "
+               "reproduces PERI's families as they are; drop one of them", style);
   if (domain->dimension == 2 && (model_dim == PD_3D || thickness == 0.0))
     error->all(FLERR, "Pair style {} in 2D needs 'plane stress' or 'plane strain' and "
                "'thickness <t>' (the plate thickness; volumes are area x thickness)", style);
@@ -716,6 +734,7 @@ double PairPD::family_key() const
   std::string s = fmt::format("{}|{}|{}|{}|{}|{}|{}", style_name(), legacy, lattice_spacing,
                               (int) model_dim, uses_weights(), history_per_bond(), family_settings());
   if (partial_volumes()) s += "|quadrature partial";    // (point: the key of files written before the option)
+  if (directional) s += "|directional";
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) s += fmt::format("|{}", horizon(i, j));
   uint64_t h = 1469598103934665603ULL;
@@ -990,6 +1009,8 @@ std::vector<PDField> PairPD::fields_to_declare() const
   const int moved = PDField::MIGRATE | PDField::OUTPUT;
   all.push_back({"family_share", 1, moved});
   all.push_back({"calibrated_volume", 1, moved});
+  // the fit's sums, then its quartic forms (scratch of the first run's set-up)
+  if (directional) all.push_back({"directional_sums", pd_directional_moments(dim()), 0});
   if (law)
     for (const PDField &f : law->per_atom_fields()) all.push_back(f);
   return all;
@@ -1206,13 +1227,15 @@ void PairPD::read_restart_settings(FILE *fp)
 }
 
 // Files written before 'quadrature' existed start with recontact (0..2);
-// later ones with a negative layout mark, then the settings.
+// later ones with a negative layout mark, then the settings: -2 up to the
+// quadrature, -3 also the directional correction.
 static constexpr int SETTINGS_LAYOUT_QUADRATURE = -2;
+static constexpr int SETTINGS_LAYOUT_DIRECTIONAL = -3;
 
 void PairPD::restart_settings(PDSettingsIO &io)
 {
   int dimcode = (int) model_dim;
-  int layout = SETTINGS_LAYOUT_QUADRATURE;
+  int layout = SETTINGS_LAYOUT_DIRECTIONAL;
   io(layout);
   const bool old_layout = layout >= 0;
   if (old_layout) recontact = layout;
@@ -1223,6 +1246,8 @@ void PairPD::restart_settings(PDSettingsIO &io)
   io(lattice_spacing);
   io(dimcode);
   io(thickness);
+  if (layout <= SETTINGS_LAYOUT_DIRECTIONAL) io(directional);
+  else directional = 0;
   model_dim = (pd_dimension) dimcode;
 }
 

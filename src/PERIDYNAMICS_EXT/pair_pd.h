@@ -91,8 +91,9 @@ class PairPD : public Pair, public PDFamilySource {
   // value it blends with
   std::vector<double> calibrate(double *q) const;
   // each atom's reference family moment sum w V |xi|^power (owned atoms;
-  // core/pd_calibration.h pd_family_moment), for a calibration
-  std::vector<double> family_moments(int power) const;
+  // core/pd_calibration.h pd_family_moment), for a calibration; unweighted:
+  // sum V |xi|^power
+  std::vector<double> family_moments(int power, bool weighted = true) const;
   // 'quadrature partial': each bond weighted by the share of its partner's
   // cell inside the horizon (core/pd_quadrature.h)
   bool partial_volumes() const { return quadrature == QUADRATURE_PARTIAL; }
@@ -149,6 +150,7 @@ class PairPD : public Pair, public PDFamilySource {
   int recontact;            // broken bonds push in compression (T14 6.1.3): once their ends touch, at any length, or never
   enum { QUADRATURE_POINT, QUADRATURE_PARTIAL };
   int quadrature;           // point: whole partner volumes; partial: their share inside the horizon
+  int directional;          // directional_correction: each family's fourth moment made isotropic
   double cell_beyond;       // partial: how far past the horizon bonds reach (half the largest cell's diagonal)
   std::vector<std::unique_ptr<PDFailureLaw>> laws;   // one of each, core/pd_laws.h order
   PDFailureLaw *law;        // the failure law of the run (one for all pairs)
@@ -174,7 +176,7 @@ class PairPD : public Pair, public PDFamilySource {
   // may hold more constants than a model needs: those are skipped, named
   // in the log)
   virtual bool uses_coefficient(int) const { return true; }
-  virtual int uses_weights() const { return legacy || partial_volumes(); }
+  virtual int uses_weights() const { return legacy || partial_volumes() || directional; }
   // > 0: every bond's weight is this times 1/|xi|, so that the force loops
   // compute it (pd_bond_view.weight_horizon); 0: they load the table
   virtual double inverse_weight_horizon() const { return 0.0; }
@@ -245,6 +247,12 @@ class PairPD : public Pair, public PDFamilySource {
   // its own family's sums and its calibrated weighted volume (per-atom
   // fields of the bond store, migrating with the atoms)
   void calibrate_families();
+  // 'directional_correction yes' (core/pd_directional.h,
+  // pair_pd_directional.cpp): whether the style offers it, with the power
+  // of |xi| in a bond's share w V |xi|^power of the stiffness; and the
+  // correction of the bond weights, once, at the run that built the families
+  virtual bool directional_moment(int & /*power*/) const { return false; }
+  void correct_directions(const std::vector<double> &share);
   std::vector<bool> lattice_types() const;    // per type: its atoms sit on a lattice
   // each type's median of q over the owned atoms that take selects (NaN: none)
   std::vector<double> type_medians(const double *q, const std::function<bool(int)> &take) const;

@@ -22,6 +22,7 @@
 #include <mpi.h>
 
 extern "C" {
+#include "pd_directional.h"
 #include "pd_orientation.h"
 }
 
@@ -29,11 +30,14 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-// A bond's weight as the store gives it, for pd_lattice_family.
+// A bond's weight as the store gives it, for pd_lattice_family: with the
+// directional correction, times the complete family's factor.
 struct StoreRule {
   const PDFamilySpec *spec;
   int weighted;
   double volume, horizon;
+  int dim;
+  const double *form;    // the quartic form of the directional correction, or null
 };
 
 double store_weight(const double xi[3], double r, void *ctx)
@@ -41,7 +45,10 @@ double store_weight(const double xi[3], double r, void *ctx)
   const StoreRule &s = *(const StoreRule *) ctx;
   PDBondGeometry g = {{xi[0], xi[1], xi[2]}, r, s.volume, s.volume, s.horizon, 1.0};
   if (!s.spec->is_bond(g)) return 0.0;
-  return s.weighted ? s.spec->weight(g) : 1.0;
+  const double w = s.weighted ? s.spec->weight(g) : 1.0;
+  if (!s.form || !(r > 0.0)) return w;
+  const double n[3] = {xi[0] / r, xi[1] / r, xi[2] / r};
+  return w * pd_directional_factor(s.dim, s.form, n);
 }
 
 std::string percent(double x)
@@ -103,7 +110,15 @@ void PairPD::report_accuracy(const PDFamilySpec &spec)
     if (!(volume[t] > 0.0) || !(h > 0.0) || !std::isfinite(h)) continue;
     pd_lattice lat;
     const std::string where = site_lattice(volume[t], lat);
-    StoreRule rule = {&spec, uses_weights(), volume[t], h};
+    StoreRule rule = {&spec, uses_weights(), volume[t], h, dim(), nullptr};
+    double form[PD_DIRECTIONAL_MAX_TERMS];
+    int power;
+    pd_family site;
+    if (directional && directional_moment(power) &&
+        pd_lattice_family(&lat, spec.reach(t, t), thickness, store_weight, &rule, &site) > 0) {
+      if (pd_family_directional_form(&site, power, form) == 0) rule.form = form;
+      pd_family_free(&site);
+    }
     const double ratio = h / (dim() == 3 ? cbrt(lat.volume) : sqrt(lat.volume));
     const char *quad = partial_volumes() ? "partial" : "point";
     pd_linear_kind kind = PD_LINEAR_CLASSICAL;
@@ -116,9 +131,9 @@ void PairPD::report_accuracy(const PDFamilySpec &spec)
     } else if (pd_lattice_expected_error(&lat, kind, model_dim, &e, h, spec.reach(t, t), thickness,
                                          store_weight, &rule, &err) == 0) {
       utils::logmesg(lmp, "{}: type {}: lattice error of the constants on {}, horizon {:.3g} spacings, {} "
-                     "quadrature: dilatation {}, shear along the lattice axes {}, simple shear xy {}\n",
-                     style_name(), t, where, ratio, quad, percent(err.dilatation), percent(err.shear_xx_yy),
-                     percent(err.shear_xy));
+                     "quadrature{}: dilatation {}, shear along the lattice axes {}, simple shear xy {}\n",
+                     style_name(), t, where, ratio, quad, rule.form ? ", directional correction" : "",
+                     percent(err.dilatation), percent(err.shear_xx_yy), percent(err.shear_xy));
     }
     const int release = law->release_kind(t);
     pd_family f;

@@ -49,6 +49,12 @@ class PairPDBond : public PairPD {
   // partial cells: at equal bonds per atom, 3 spacings with partial cells
   // beat 4 without (constants 2.8% against 7.7%, 3D; doc/accuracy.md)
   int default_quadrature() const override { return QUADRATURE_PARTIAL; }
+  // a bond's share of the stiffness: c w V |xi| (PMB's energy c s^2 |xi| / 4 at each end)
+  bool directional_moment(int &power) const override
+  {
+    power = 1;
+    return true;
+  }
   // PMB: its relative lattice error does not depend on the stiffness
   bool linear_model(int, pd_linear_kind &kind, pd_elastic &e) const override
   {

@@ -23,6 +23,13 @@ extern "C" {
 
 using namespace LAMMPS_NS;
 
+// the share of a type's atoms that must have its largest family moment for
+// a lattice: a lattice's interior atoms (an 8^3 block at 3 spacings: 1.6%;
+// larger bodies more) or, in a body too thin for any, its middle layers;
+// an irregular arrangement has one or a few atoms there, a motif of more
+// than 100 atoms repeated its copies
+static constexpr double PD_LATTICE_SHARE = 0.01;
+
 // The per-type median of q over the owned atoms that 'take' selects, on
 // all ranks: bisection on the count of values at or below a guess (one
 // reduction per step), then the smallest value above the lower bound,
@@ -70,22 +77,28 @@ std::vector<double> PairPD::type_medians(const double *q, const std::function<bo
   return median;
 }
 
-// Types on a lattice: at least two atoms share the largest first moment
-// sum w V |xi| to round-off (the interior ones). Jittered particles of
-// equal volumes may share a family volume (a count of partners), but not
-// that moment.
+// Types on a lattice: the largest geometric moment sum V |xi| is shared
+// to round-off by at least two atoms and PD_LATTICE_SHARE of the type's
+// (a lattice's interior atoms, or the middle layers of a body too thin to
+// have any). Jittered particles of equal volumes may share a family
+// volume (a count of partners), but not that moment, which is unweighted
+// since a weight can make it a count (the inverse influence: w V |xi| =
+// delta V); and an irregular motif repeated ('replicate') shares it only
+// between its copies, a share of 1 / (atoms of the motif).
 std::vector<bool> PairPD::lattice_types() const
 {
   const int n = atom->ntypes + 1;
-  const std::vector<double> moment = family_moments(1);
-  std::vector<double> largest(n, 0.0), at_largest(n, 0.0);
+  const std::vector<double> moment = family_moments(1, false);
+  std::vector<double> largest(n, 0.0), at_largest(2 * n, 0.0);    // then the type's count
   for (int i = 0; i < atom->nlocal; i++) largest[atom->type[i]] = MAX(largest[atom->type[i]], moment[i]);
   MPI_Allreduce(MPI_IN_PLACE, largest.data(), n, MPI_DOUBLE, MPI_MAX, world);
-  for (int i = 0; i < atom->nlocal; i++)
+  for (int i = 0; i < atom->nlocal; i++) {
     if (moment[i] >= (1.0 - 1e-12) * largest[atom->type[i]]) at_largest[atom->type[i]] += 1.0;
-  MPI_Allreduce(MPI_IN_PLACE, at_largest.data(), n, MPI_DOUBLE, MPI_SUM, world);
+    at_largest[n + atom->type[i]] += 1.0;
+  }
+  MPI_Allreduce(MPI_IN_PLACE, at_largest.data(), 2 * n, MPI_DOUBLE, MPI_SUM, world);
   std::vector<bool> lattice(n);
-  for (int t = 0; t < n; t++) lattice[t] = at_largest[t] >= 2.0;
+  for (int t = 0; t < n; t++) lattice[t] = at_largest[t] >= MAX(2.0, PD_LATTICE_SHARE * at_largest[n + t]);
   return lattice;
 }
 
@@ -125,11 +138,17 @@ void PairPD::calibrate_families()
     family_tolerance[t] = pd_calibration_tolerance(scatter);
   }
   double *share = bonds->field(field_index("family_share"));
+  std::vector<double> complete_share(atom->nlocal);
   for (int i = 0; i < atom->nlocal; i++) {
     const int t = atom->type[i];
     const double c = interior[t] > 0.0 ? v[i] / interior[t] : 0.0;
-    share[i] = surface_corrected() ? 1.0 : pd_calibration_share(c, family_tolerance[t]);
+    complete_share[i] = pd_calibration_share(c, family_tolerance[t]);
+    share[i] = surface_corrected() ? 1.0 : complete_share[i];
   }
+  // the bond weights' directional correction, once (it changes the
+  // weighted volumes, not the family volumes the shares come from); near
+  // a surface on the complete family's, also with the surface correction
+  if (directional && bonds->weights_as_built()) correct_directions(complete_share);
   double *m = bonds->field(field_index("calibrated_volume"));
   for (int i = 0; i < atom->nlocal; i++) m[i] = bonds->weighted_volume()[i];
   calibrated_reference = calibrate(m);
@@ -182,10 +201,11 @@ bool PairPD::calibration_uniform() const
   return all != 0;
 }
 
-std::vector<double> PairPD::family_moments(int power) const
+std::vector<double> PairPD::family_moments(int power, bool weighted) const
 {
   std::vector<double> moment(atom->nlocal + atom->nghost, 0.0);
-  const pd_bond_view view = bonds->view();
+  pd_bond_view view = bonds->view();
+  if (!weighted) view.weight = nullptr;    // (w = 1)
   pd_family_moment(&view, atom->vfrac, power, moment.data());
   bonds->sum_to_owners(moment.data());
   return moment;

@@ -124,7 +124,7 @@ PDFamilySpec::Weight PairPDOrdinary::weight_rule() const
 // loops compute it when all type pairs share one horizon.
 double PairPDOrdinary::inverse_weight_horizon() const
 {
-  if (legacy || partial_volumes() || influence != PD_INFLUENCE_INVERSE) return 0.0;
+  if (legacy || partial_volumes() || directional || influence != PD_INFLUENCE_INVERSE) return 0.0;
   const double h = horizon(1, 1);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = 1; j <= atom->ntypes; j++)

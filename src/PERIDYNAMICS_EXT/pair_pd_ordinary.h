@@ -54,6 +54,12 @@ class PairPDOrdinary : public PairPD, public PDBondEnergies {
   void check_coeff(int, int) override;
   int uses_weights() const override { return 1; }
   double inverse_weight_horizon() const override;
+  // a bond's share of the stiffness: w V (the energy mu N sum w eps^2 V)
+  bool directional_moment(int &power) const override
+  {
+    power = 0;
+    return true;
+  }
   PDFamilySpec::Weight weight_rule() const override;
   void stable_dt_sum(double *) override;
   void tangent_sum(double *, double *) override;

@@ -124,6 +124,11 @@ def model(setting):
     return setting.get("plane", "plane stress")
 
 
+# the styles with directional_correction (named in every deck, 'directional':
+# False in a setting for 'no')
+DIRECTIONAL_STYLES = ("pd/bond", "pd/ordinary")
+
+
 def pair_lines(setting, h, fail="", mat="PMMA"):
     """pair_style and pair_coeff lines; fail = '' or e.g. 'fail energy Gc 400'."""
     p = material(mat)
@@ -135,6 +140,8 @@ def pair_lines(setting, h, fail="", mat="PMMA"):
         words.append(f"influence {setting['influence']}")
     # always named: the styles' defaults may differ (pd/bond: partial)
     words.append(f"quadrature {setting.get('quadrature', 'point')}")
+    if style in DIRECTIONAL_STYLES:
+        words.append(f"directional_correction {'no' if setting.get('directional') is False else 'yes'}")
     if "recontact" in setting:
         words.append(f"recontact {setting['recontact']}")
     if model(setting) != "3d":
@@ -226,7 +233,7 @@ LATTICE_LINE = {"sc": "lattice sc ${a}", "square": "lattice sq ${a}", "sq": "lat
 
 def user_lines(s):
     """The deck lines of a setting dict (the keys of the accuracy cases:
-    style, lattice, plane, influence, strain, quadrature, recontact,
+    style, lattice, plane, influence, strain, quadrature, directional, recontact,
     ratio, m or order, law, spacing or h, dt_fraction; timestep, note:
     a comment line)."""
     lines = []
@@ -244,6 +251,8 @@ def user_lines(s):
     if s.get("influence") and style != "pd/bond":
         words.append(f"influence {s['influence']}")
     words.append(f"quadrature {s.get('quadrature') or 'point'}")
+    if style in DIRECTIONAL_STYLES:
+        words.append(f"directional_correction {'no' if s.get('directional') is False else 'yes'}")
     if s.get("recontact"):
         words.append(f"recontact {s['recontact']}")
     dims = dims_of({"sq": "square"}.get(lat, lat)) if lat else s.get("dim", 3)

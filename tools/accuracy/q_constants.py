@@ -11,7 +11,11 @@ the classical constants of the material the pair lines
 define (PMMA of potentials/materials.pd; bond-based: its fixed Poisson's
 ratio). Modes: the axial strains, the shears (xy, xz, yz: simple shear by
 box tilt), the 45-degree rotated shear of the xy plane (eps_xx = -eps_yy)
-and the dilatation.
+and the dilatation. pd/bond and pd/ordinary run with their default
+directional correction (each family's fourth moment made isotropic:
+exact on every lattice), and with `directional_correction no` for the
+default influence function (curves `... directional no`: the lattice's
+own anisotropy).
 
 Cost: nve steps on the same block, after the strains (at least 20, and at
 least 1e5 particle-steps, at most 2000 steps: a small 2D block needs many
@@ -94,6 +98,9 @@ def cases(mode):
                         if influence:
                             c["influence"] = influence
                         out.append(c)
+                        # without the directional correction: the lattice's own anisotropy
+                        if mode != "smoke" and style != "pd/corr" and k == 0:
+                            out.append(dict(c, directional=False))
     return out
 
 
@@ -120,7 +127,8 @@ def group(case):
 
 def family(case):
     """The curve a case belongs to: everything but the horizon ratio."""
-    return " ".join(str(case[k]) for k in ("style", "lattice", "plane", "influence", "quadrature") if case.get(k))
+    return " ".join(str(case[k]) for k in ("style", "lattice", "plane", "influence", "quadrature") if case.get(k)) + \
+        (" directional no" if case.get("directional") is False else "")
 
 
 def measure(case, lmp, workdir):

@@ -9,7 +9,10 @@ spacings to 1.05 horizons, by which every bond across the plane has
 broken. The energy the bonds dissipated (compute pd/fracture, per atom,
 summed over a window of the plane 2 horizons away from the band's ends;
 where the plane has rows of atoms, the window holds whole rows, else it
-is three times longer, 36 spacings or 12 horizons)
+is three times longer, 36 spacings or 12 horizons; the jittered
+arrangement's window is three times longer too, 37 rows: its G is a mean
+over the atoms' offsets, and one arrangement's 13 rows scattered it by
++-5%)
 divided by the window's area is compared with G_c (PMMA, 400 J/m^2),
 for `fail stretch Gc` and `fail energy Gc`. A bond breaks in the first
 step its stretch (or energy) exceeds the critical one, at most a factor
@@ -99,7 +102,7 @@ def separation(case, theta, h=H):
     p_n, p_t = row_spacing(deck.base_lattice(lattice), theta, a)
     c0 = 0.5 * p_n if p_n else 0.37 * a
     B = 2 * delta + h
-    W = max(12 * h, 4 * delta)
+    W = max(12 * h, 4 * delta) * (3 if theta == "jitter" else 1)
     if p_t:
         W = (2 * math.ceil(W / (2 * p_t)) + 1) * p_t
     else:

@@ -281,6 +281,8 @@ def run_exact(pd_exact, workdir, c, model, sites, lengths, horizon, time, tag):
     if c["style"] == "pd/ordinary" and c.get("influence"):
         lines.append(f"influence {c['influence']}")
     lines.append(f"quadrature {c['quadrature']}")
+    if c.get("directional") is False:
+        lines.append("directional_correction no")
     inp = os.path.join(workdir, f"in.exact.{tag}")
     with open(inp, "w") as f:
         f.write("\n".join(lines) + "\n")

@@ -34,6 +34,7 @@ static int parse(exact_input *in, const char *key, char **val, int nval)
   if (strcmp(key, "influence") == 0) return word(in->influence, sizeof in->influence, v);
   if (strcmp(key, "plane") == 0) return word(in->plane, sizeof in->plane, v);
   if (strcmp(key, "quadrature") == 0) return word(in->quadrature, sizeof in->quadrature, v);
+  if (strcmp(key, "directional_correction") == 0) return word(in->directional, sizeof in->directional, v);
   if (strcmp(key, "fields") == 0) return word(in->fields, sizeof in->fields, v);
   if (strcmp(key, "output") == 0) return word(in->output, sizeof in->output, v);
   if (strcmp(key, "dim") == 0) {

@@ -17,6 +17,7 @@ typedef struct exact_input {
   char influence[32];   /* "" = pd/ordinary's default */
   char plane[16];       /* stress or strain (2D) */
   char quadrature[16];  /* point (default) or partial */
+  char directional[8];  /* yes (default) or no: the pair styles' directional_correction */
   double thickness;     /* 2D: plate thickness (default 1) */
   double time;
   double origin[3];     /* position of grid point (0, 0, 0) */

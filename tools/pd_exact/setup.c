@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "pd_directional.h"
 #include "pd_quadrature.h"
 
 #define GIVEN(x) (!isnan(x))
@@ -41,6 +42,21 @@ static double bond_weight(const double xi[3], double r, void *ctx)
   double w = c->ordinary ? pd_influence_of_cell(c->iw.kind, c->iw.dim, r, c->iw.horizon) : 1.0;
   if (c->partial) w *= pd_cell_fraction(c->dim, xi, c->cell, c->iw.horizon);
   return w;
+}
+
+/* The pair styles' directional correction on a lattice family: every
+ * site's family is the same, so each bond's weight takes that family's
+ * factor (core/pd_directional.h); the stiffness share is w V |xi|^power. */
+static int directional(pd_family *f, int power)
+{
+  double form[PD_DIRECTIONAL_MAX_TERMS];
+  if (pd_family_directional_form(f, power, form)) return -1;
+  for (int b = 0; b < f->n; b++) {
+    pd_family_bond *bd = &f->bond[b];
+    const double n[3] = {bd->xi[0] / bd->r, bd->xi[1] / bd->r, bd->xi[2] / bd->r};
+    bd->w *= pd_directional_factor(f->dim, form, n);
+  }
+  return 0;
 }
 
 static int pmb(const exact_input *in, exact_problem *p, FILE *err)
@@ -103,6 +119,10 @@ int exact_setup(const exact_input *in, exact_problem *p, FILE *err)
   const int ordinary = wc.ordinary;
   if (!classical && pd_lattice_family(&p->lat, cutoff, in->thickness, bond_weight, &wc, &p->fam) < 1)
     return fail(err, "the horizon holds no bond");
+  if (in->directional[0] && strcmp(in->directional, "yes") != 0 && strcmp(in->directional, "no") != 0)
+    return fail(err, "directional_correction: expected yes or no");
+  if (!classical && d >= 2 && strcmp(in->directional, "no") != 0 && directional(&p->fam, ordinary ? 0 : 1))
+    return fail(err, "directional_correction: the family's eighth moments are singular");
 
   pd_elastic e;
   if (strcmp(in->model, "pmb") == 0) {

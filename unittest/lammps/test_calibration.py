@@ -58,10 +58,11 @@ def jittered(lattice, boundary, body, seed=4711, volumes=0.3):
             f"variable vr atom {V!r}*(1+{volumes!r}*(2*random(0,1,{seed + 1})-1))\nset group all volume v_vr\n")
 
 
-def strain_errors(style, lattice, mode="dilatation", m=None, ranks=1, volumes=0.3, side=8):
+def strain_errors(style, lattice, mode="dilatation", m=None, ranks=1, volumes=0.3, side=8, copies=1):
     """Per-atom energy density of a uniform strain (+-E0, averaged) over
-    the classical one, minus 1, on a jittered periodic block; and the
-    dump's rows (id: energy, family_share, calibrated_volume)."""
+    the classical one, minus 1, on a jittered periodic block (repeated
+    'copies' times along each axis); and the dump's rows (id: energy,
+    family_share, calibrated_volume)."""
     dims = deck.dims_of(lattice)
     case = {"style": style, "lattice": lattice, "ratio": 3, "quadrature": "point"}
     if m is not None:
@@ -70,13 +71,14 @@ def strain_errors(style, lattice, mode="dilatation", m=None, ranks=1, volumes=0.
     body = text[text.index("region box"):text.index("set group all density")]
     d = workdir()
     # the arrangement on one rank (its random numbers depend on the ranks), run on any
-    run(jittered(lattice, "p p p", body, volumes=volumes) + "write_data body.data\n", d, name="in.body")
+    repeat = f"replicate {copies} {copies} {copies if dims == 3 else 1}\n" if copies > 1 else ""
+    run(jittered(lattice, "p p p", body, volumes=volumes) + repeat + "write_data body.data\n", d, name="in.body")
     deck_text = deck.header(lattice, H, "p p p") + "read_data body.data\n" + deck.pair_lines(case, H)
     deck_text += ("compute pa all pe/atom\ncompute fa all pd/atom family_share calibrated_volume\n"
                   "thermo_style custom step pe\nrun 0\n")
     e = q_constants.modes(dims)[mode]
     for sign in (1, -1):
-        deck_text += q_constants.box_change([[sign * x for x in r] for r in e], lengths)
+        deck_text += q_constants.box_change([[sign * x for x in r] for r in e], [copies * x for x in lengths])
         deck_text += (f"dump dd all custom 1 dump.{sign} id c_pa c_fa[1] c_fa[2]\n"
                       "dump_modify dd format float %.17g\nrun 0 post no\nundump dd\n")
     run(deck_text, d, ranks=ranks)
@@ -112,7 +114,14 @@ for lattice in ("sc", "square"):
 # (square, 900 atoms, constant influence: several atoms have the most partners)
 errors, atoms = strain_errors("pd/ordinary", "square", m=0.5, volumes=0.0, side=29)
 check_le(f"square jittered, equal volumes, {len(atoms)} atoms: every atom's dilatation energy is classical",
-         max(abs(x) for x in errors), 1e-6, "told from a lattice by its moment sum w V |xi|")
+         max(abs(x) for x in errors), 1e-6, "told from a lattice by its moment sum V |xi|")
+# ... and in 3D with the default inverse influence, whose weighted moment
+# w V |xi| = delta V is a count of partners; a jittered motif repeated
+# 2 x 2 x 2 (its 8 copies share every moment: not a lattice either)
+errors, atoms = strain_errors("pd/ordinary", "sc", m=0.5, volumes=0.0, side=7, copies=2)
+check_le(f"sc jittered motif repeated, equal volumes, inverse influence, {len(atoms)} atoms: every atom's "
+         "dilatation energy is classical", max(abs(x) for x in errors), 1e-6,
+         "told from a lattice by the unweighted moment and the share of atoms at the largest")
 
 # the same calibration on 2 ranks
 _, one = strain_errors("pd/ordinary", "sc", m=0.5)

@@ -1,0 +1,158 @@
+#include "pd_directional.h"
+
+#include "pd_lattice.h"
+
+#include <math.h>
+
+/* The monomials n^e of one degree, in a fixed order: in 3D e = (a, b, c)
+ * for a from the degree down, then b down; in 2D e = (a, degree - a, 0). */
+static int monomial_count(int dim, int degree)
+{
+  return dim == 3 ? (degree + 1) * (degree + 2) / 2 : degree + 1;
+}
+
+static void monomial(int dim, int degree, int index, int e[3])
+{
+  if (dim != 3) {
+    e[0] = degree - index;
+    e[1] = index;
+    e[2] = 0;
+    return;
+  }
+  for (int a = degree; a >= 0; a--) {
+    const int row = degree - a + 1;    /* the monomials with this a */
+    if (index < row) {
+      e[0] = a;
+      e[1] = degree - a - index;
+      e[2] = index;
+      return;
+    }
+    index -= row;
+  }
+}
+
+static int monomial_index(int dim, const int e[3])
+{
+  if (dim != 3) return e[1];
+  const int degree = e[0] + e[1] + e[2];
+  int index = 0;
+  for (int a = degree; a > e[0]; a--) index += degree - a + 1;
+  return index + e[2];
+}
+
+static double power_of(const double n[3], const int e[3])
+{
+  double p = 1.0;
+  for (int k = 0; k < 3; k++)
+    for (int q = 0; q < e[k]; q++) p *= n[k];
+  return p;
+}
+
+int pd_directional_terms(int dim)
+{
+  return monomial_count(dim, 4);
+}
+
+int pd_directional_moments(int dim)
+{
+  return 1 + monomial_count(dim, 8);
+}
+
+void pd_directional_add(int dim, const double n[3], double mu, double *moments)
+{
+  moments[0] += mu;
+  const int count = monomial_count(dim, 8);
+  for (int b = 0; b < count; b++) {
+    int e[3];
+    monomial(dim, 8, b, e);
+    moments[1 + b] += mu * power_of(n, e);
+  }
+}
+
+/* The isotropic fourth moment t (I I + 2 sym) at monomial e: 3t for
+ * n_x^4, t for n_x^2 n_y^2, 0 for every odd exponent. */
+static double isotropic_moment(const int e[3], double t)
+{
+  if (e[0] % 2 || e[1] % 2 || e[2] % 2) return 0.0;
+  return (e[0] == 4 || e[1] == 4 || e[2] == 4) ? 3.0 * t : t;
+}
+
+void pd_directional_unit(int dim, double *form)
+{
+  const int count = pd_directional_terms(dim);
+  for (int a = 0; a < count; a++) {
+    int e[3];
+    monomial(dim, 4, a, e);
+    /* (n.n)^2: each n_x^4 once, each n_x^2 n_y^2 twice */
+    const double moment = isotropic_moment(e, 1.0);
+    form[a] = moment == 3.0 ? 1.0 : 2.0 * moment;
+  }
+}
+
+int pd_directional_fit(int dim, const double *moments, double *form)
+{
+  const int count = pd_directional_terms(dim);
+  double g[PD_DIRECTIONAL_MAX_TERMS][PD_DIRECTIONAL_MAX_TERMS + 1];
+  const double t = moments[0] / (dim == 3 ? 15.0 : 8.0);
+  double scale = 0.0;
+  for (int a = 0; a < count; a++) {
+    int ea[3];
+    monomial(dim, 4, a, ea);
+    for (int b = 0; b < count; b++) {
+      int eb[3], e[3];
+      monomial(dim, 4, b, eb);
+      for (int k = 0; k < 3; k++) e[k] = ea[k] + eb[k];
+      g[a][b] = moments[1 + monomial_index(dim, e)];
+    }
+    g[a][count] = isotropic_moment(ea, t);
+    scale = fmax(scale, fabs(g[a][a]));
+  }
+  /* Gaussian elimination with partial pivoting */
+  for (int c = 0; c < count; c++) {
+    int pivot = c;
+    for (int r = c + 1; r < count; r++)
+      if (fabs(g[r][c]) > fabs(g[pivot][c])) pivot = r;
+    if (!(fabs(g[pivot][c]) > 1e-10 * scale)) {
+      pd_directional_unit(dim, form);
+      return -1;
+    }
+    for (int k = 0; k <= count; k++) {
+      const double swap = g[c][k];
+      g[c][k] = g[pivot][k];
+      g[pivot][k] = swap;
+    }
+    for (int r = c + 1; r < count; r++) {
+      const double f = g[r][c] / g[c][c];
+      for (int k = c; k <= count; k++) g[r][k] -= f * g[c][k];
+    }
+  }
+  for (int a = count - 1; a >= 0; a--) {
+    double s = g[a][count];
+    for (int k = a + 1; k < count; k++) s -= g[a][k] * form[k];
+    form[a] = s / g[a][a];
+  }
+  return 0;
+}
+
+double pd_directional_factor(int dim, const double *form, const double n[3])
+{
+  const int count = pd_directional_terms(dim);
+  double f = 0.0;
+  for (int a = 0; a < count; a++) {
+    int e[3];
+    monomial(dim, 4, a, e);
+    f += form[a] * power_of(n, e);
+  }
+  return f;
+}
+
+int pd_family_directional_form(const pd_family *f, int power, double *form)
+{
+  double moments[PD_DIRECTIONAL_MAX_MOMENTS] = {0.0};
+  for (int b = 0; b < f->n; b++) {
+    const pd_family_bond *bd = &f->bond[b];
+    const double n[3] = {bd->xi[0] / bd->r, bd->xi[1] / bd->r, bd->xi[2] / bd->r};
+    pd_directional_add(f->dim, n, bd->w * f->volume * pow(bd->r, power), moments);
+  }
+  return pd_directional_fit(f->dim, moments, form);
+}

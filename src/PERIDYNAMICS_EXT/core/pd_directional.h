@@ -1,0 +1,55 @@
+/* Directional correction of a family (opt-in: 'directional_correction yes').
+ *
+ * Under a uniform strain eps a bond of direction n stretches by n.eps.n, so
+ * a family's elastic energy is a sum over its bonds of mu (n.eps.n)^2, mu
+ * the bond's share of the stiffness (weight x partner volume x |xi|^power:
+ * power 1 for a bond-based solid, 2 for the ordinary solid's deviatoric
+ * energy). The family's constants are those of its fourth moment
+ *   M = sum mu n (x) n (x) n (x) n,
+ * which a continuum family has isotropic. A lattice family does not (the
+ * square lattice's shear at 45 degrees against along the rows), nor does an
+ * irregular one, and no scalar normalization can fix that. Here each bond
+ * weight is multiplied by a quartic form of the bond's direction,
+ *   f(n) = sum_A c_A n^A   (A the monomials of degree 4: 15 in 3D, 5 in 2D),
+ * fitted per family so that sum mu f(n) n (x) n (x) n (x) n is the isotropic
+ * tensor t (I I + 2 sym) of the same trace (t = trace / 15 in 3D, / 8 in
+ * 2D). The trace is kept (sum mu f = sum mu): the normalizations and
+ * calibrations built on it are unchanged, and a family that is already
+ * isotropic (the hexagonal lattice) gets f = 1. The quartic forms are as
+ * many as the conditions, so the fit is a square linear system whose
+ * matrix is the family's eighth moments (positive definite when the bond
+ * directions are not all on a few lines). */
+#ifndef PD_DIRECTIONAL_H
+#define PD_DIRECTIONAL_H
+
+/* Monomials of degree 4 in 3D and the moments a fit needs: the trace
+ * sum mu, then the eighth moments sum mu n^B (45 in 3D, 9 in 2D). */
+#define PD_DIRECTIONAL_MAX_TERMS 15
+#define PD_DIRECTIONAL_MAX_MOMENTS 46
+
+/* The quartic form's coefficients (15 in 3D, 5 in 2D). */
+int pd_directional_terms(int dim);
+/* The per-family sums of a fit (46 in 3D, 10 in 2D). */
+int pd_directional_moments(int dim);
+
+/* Adds one bond (unit direction n, stiffness share mu) to a family's sums. */
+void pd_directional_add(int dim, const double n[3], double mu, double *moments);
+
+/* The quartic form of a family from its sums. Returns 0, or -1 when the
+ * eighth moments are singular (a family too small or flat to fit: form is
+ * then the isotropic one, f = 1). */
+int pd_directional_fit(int dim, const double *moments, double *form);
+
+/* f = 1 as a quartic form: (n.n)^2. */
+void pd_directional_unit(int dim, double *form);
+
+/* The factor f(n) of a bond direction (unit n). */
+double pd_directional_factor(int dim, const double *form, const double n[3]);
+
+/* The form of a complete lattice family (pd_lattice.h), stiffness share
+ * w V |xi|^power: what every interior atom of the lattice fits. Returns
+ * pd_directional_fit's answer. */
+struct pd_family;
+int pd_family_directional_form(const struct pd_family *f, int power, double *form);
+
+#endif
