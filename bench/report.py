@@ -340,11 +340,11 @@ def print_effects(best):
     print("Cost of each effect (time with the effect / time of the baseline: the smallest passes;")
     print("median = median of the ratios within each pass, listed in brackets, on which the bars are")
     print("judged; elastic run, no bond breaks)")
-    print(f"  {'effect':22s} {'style':26s} {'baseline':20s} {'cost':>7s} {'median':>7s}")
+    print(f"  {'effect':22s} {'style':26s} {'baseline':26s} {'cost':>7s} {'median':>7s}")
     for effect, style, base, bar in EFFECTS:
         if style in best and base in best:
             ratio, med = timed(best[style]) / timed(best[base]), median_ratio(best[style], best[base])
-            print(f"  {effect:22s} {style:26s} {base:20s} {ratio:6.2f}x {med:6.2f}x   "
+            print(f"  {effect:22s} {style:26s} {base:26s} {ratio:6.2f}x {med:6.2f}x   "
                   f"{mark(med, bar, False):24s} ({per_pass(best[style], best[base])})")
     for style, rec in best.items():
         if rec["contact_nb"] is not None:

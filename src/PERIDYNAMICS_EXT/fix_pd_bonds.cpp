@@ -139,9 +139,9 @@ void FixPDBonds::take_family_spec()
   if (!serving) return;
   if (!built) family_key = spec.key;
   else if (family_key != spec.key)
-    error->all(FLERR, "Pair {}: the bond families were built for other pair settings (style, "
-               "horizons, influence, quadrature, legacy or dimension changed after the first run); they are "
-               "built once: start the simulation again with the new settings", spec.style);
+    error->all(FLERR, "Pair {}: the bond families were built for other pair settings (style, horizons, "
+               "influence, quadrature, directional_correction, legacy or dimension changed after the first "
+               "run); they are built once: start the simulation again with the new settings", spec.style);
 }
 
 void FixPDBonds::setup_post_neighbor()

@@ -9,8 +9,11 @@
    family's (the median of each coefficient over the interior atoms): a
    surface family's own fit would make the missing half of its moment up
    from the half it has (also with surface_correction yes, which
-   renormalizes the weighted volume only). The weights, scaled once, are the families' from
-   then on (restart files keep them).
+   renormalizes the weighted volume only). A family too irregular for the
+   fit, whose own form would give one of its bonds a factor below
+   PD_DIRECTIONAL_FLOOR, is moved toward f = 1 until it gives the floor.
+   The weights, scaled once, are the families' from then on (restart
+   files keep them).
 ------------------------------------------------------------------------- */
 
 #include "pair_pd.h"
@@ -30,6 +33,15 @@ extern "C" {
 
 using namespace LAMMPS_NS;
 
+// |xi|, and n = xi / |xi| (a bond of zero length: 0, n unset)
+static double unit_direction(const double *xi, double n[3])
+{
+  const double r = sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+  if (r > 0.0)
+    for (int k = 0; k < 3; k++) n[k] = xi[k] / r;
+  return r;
+}
+
 void PairPD::correct_directions(const std::vector<double> &share)
 {
   const int d = dim(), nterms = pd_directional_terms(d), width = pd_directional_moments(d);
@@ -42,9 +54,10 @@ void PairPD::correct_directions(const std::vector<double> &share)
 
   // each family's sums, at both ends of every bond (broken or not)
   bonds->each_reference_bond([&](int i, int j, const double *xi, double w) {
-    const double r = sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+    double n[3];
+    const double r = unit_direction(xi, n);
     if (!(r > 0.0)) return;
-    const double n[3] = {xi[0] / r, xi[1] / r, xi[2] / r}, stiff = w * pow(r, power);
+    const double stiff = w * pow(r, power);
     pd_directional_add(d, n, stiff * vol[j], sums + (size_t) i * width);
     pd_directional_add(d, n, stiff * vol[i], sums + (size_t) j * width);
   });
@@ -69,11 +82,26 @@ void PairPD::correct_directions(const std::vector<double> &share)
   }
   bonds->copy_to_ghosts(sums, width);
 
+  // each form's smallest factor on its own family's bonds; a form that
+  // would soften a bond below the floor (or make it negative) moves toward
+  // f = 1 just enough
+  std::vector<double> lowest(nall, -INFINITY);    // minus the smallest
+  bonds->each_reference_bond([&](int i, int j, const double *xi, double) {
+    double n[3];
+    if (!(unit_direction(xi, n) > 0.0)) return;
+    lowest[i] = MAX(lowest[i], -pd_directional_factor(d, sums + (size_t) i * width, n));
+    lowest[j] = MAX(lowest[j], -pd_directional_factor(d, sums + (size_t) j * width, n));
+  });
+  bonds->max_to_owners(lowest.data());
+  bigint limited = 0;
+  for (int i = 0; i < nlocal; i++) limited += pd_directional_limit(d, sums + (size_t) i * width, -lowest[i]);
+  MPI_Allreduce(MPI_IN_PLACE, &limited, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (limited) bonds->copy_to_ghosts(sums, width);
+
   double range[2] = {INFINITY, INFINITY};    // smallest factor, minus the largest
   bonds->scale_weights([&](int i, int j, const double *xi) {
-    const double r = sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
-    if (!(r > 0.0)) return 1.0;
-    const double n[3] = {xi[0] / r, xi[1] / r, xi[2] / r};
+    double n[3];
+    if (!(unit_direction(xi, n) > 0.0)) return 1.0;
     const double f = 0.5 * (pd_directional_factor(d, sums + (size_t) i * width, n) +
                             pd_directional_factor(d, sums + (size_t) j * width, n));
     range[0] = MIN(range[0], f);
@@ -82,10 +110,12 @@ void PairPD::correct_directions(const std::vector<double> &share)
   });
   MPI_Allreduce(MPI_IN_PLACE, range, 2, MPI_DOUBLE, MPI_MIN, world);
   if (!(range[0] > 0.0))
-    error->all(FLERR, "Pair {}: directional_correction: a bond's weight factor is {:.3g}; a bond needs a "
-               "positive one: these families are too irregular for the quartic correction at this horizon "
-               "(a larger horizon, or directional_correction no)", style_name(), range[0]);
+    error->all(FLERR, "Pair {}: directional_correction: a bond's weight factor is {:.3g} after the floor "
+               "of {} (a bug)", style_name(), range[0], PD_DIRECTIONAL_FLOOR);
   if (comm->me == 0 && std::isfinite(range[0]))
     utils::logmesg(lmp, "{}: directional correction: each family's fourth moment made isotropic, bond "
-                   "weights scaled by {:.3f} .. {:.3f}\n", style_name(), range[0], -range[1]);
+                   "weights scaled by {:.3f} .. {:.3f}{}\n", style_name(), range[0], -range[1],
+                   limited ? fmt::format("; {} atoms' families too irregular for it (a factor below {}): "
+                                         "corrected only partly", limited, PD_DIRECTIONAL_FLOOR)
+                           : std::string());
 }

@@ -126,6 +126,23 @@ int main(void)
   for (int b = 0; b < hex.n; b += 5)
     check_rel("hex: f = 1", pd_directional_factor(2, form, hex.dir[b]), 1.0, 1e-11);
 
+  /* a form that would make a bond negative is moved toward f = 1 until its
+   * smallest factor on the family is the floor; one above it is kept */
+  double bent[PD_DIRECTIONAL_MAX_TERMS];
+  pd_directional_unit(2, bent);
+  bent[0] -= 1.5;    /* f = 1 - 1.5 n_x^4: -0.5 along x, 1 along y */
+  const double along_x[3] = {1.0, 0.0, 0.0}, along_y[3] = {0.0, 1.0, 0.0};
+  check_true("limit: a form with a negative factor is limited",
+             pd_directional_limit(2, bent, pd_directional_factor(2, bent, along_x)) == 1);
+  check_rel("limit: its smallest factor is the floor", pd_directional_factor(2, bent, along_x),
+            PD_DIRECTIONAL_FLOOR, 1e-14);
+  check_rel("limit: where it was 1 it stays 1", pd_directional_factor(2, bent, along_y), 1.0, 1e-14);
+  double kept[PD_DIRECTIONAL_MAX_TERMS];
+  pd_directional_unit(2, kept);
+  kept[0] -= 0.5;    /* smallest 0.5: above the floor */
+  check_true("limit: a form above the floor is kept", pd_directional_limit(2, kept, 0.5) == 0 &&
+             fabs(pd_directional_factor(2, kept, along_x) - 0.5) < 1e-15);
+
   /* bonds on two lines only: no quartic form can be fitted */
   family flat = {3, 4, {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}}, {1, 1, 1, 1}};
   check_true("two lines: singular", fitted(&flat, form) == -1);

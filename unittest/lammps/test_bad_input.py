@@ -433,6 +433,9 @@ cases += [
      "restart file bonds carry 0 history values, the pair style now needs 1"),
     ("a pd/ordinary restart continued with another influence function",
      restart("ordinary", "pair_style pd/ordinary influence gaussian\n"), "the bond families were built for other pair settings"),
+    ("a pd/ordinary restart continued without the directional correction",
+     restart("ordinary", "pair_style pd/ordinary directional_correction no\n"),
+     "the bond families were built for other pair settings"),
 ]
 # every case on 1 and 2 ranks: the ERROR must reach the output either way
 for ranks in (1, 2):

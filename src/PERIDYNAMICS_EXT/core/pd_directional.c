@@ -89,6 +89,17 @@ void pd_directional_unit(int dim, double *form)
   }
 }
 
+int pd_directional_limit(int dim, double *form, double smallest)
+{
+  if (!(smallest < PD_DIRECTIONAL_FLOOR)) return 0;
+  double unit[PD_DIRECTIONAL_MAX_TERMS];
+  pd_directional_unit(dim, unit);
+  /* the factor 1 + a (f - 1) is the floor where f is smallest */
+  const double a = (1.0 - PD_DIRECTIONAL_FLOOR) / (1.0 - smallest);
+  for (int k = 0; k < pd_directional_terms(dim); k++) form[k] = a * form[k] + (1.0 - a) * unit[k];
+  return 1;
+}
+
 int pd_directional_fit(int dim, const double *moments, double *form)
 {
   const int count = pd_directional_terms(dim);

@@ -43,6 +43,16 @@ int pd_directional_fit(int dim, const double *moments, double *form);
 /* f = 1 as a quartic form: (n.n)^2. */
 void pd_directional_unit(int dim, double *form);
 
+/* The smallest factor a form may give a bond of its own family: a family
+ * too irregular for a quartic fit (a few bonds, an influence that vanishes
+ * at the horizon) can ask for a negative stiffness. */
+#define PD_DIRECTIONAL_FLOOR 0.25
+
+/* A form whose smallest factor on its own family's bonds is 'smallest',
+ * limited to PD_DIRECTIONAL_FLOOR: moved toward f = 1 just enough, form =
+ * a form + (1 - a) (n.n)^2. Returns 1 if it was limited, 0 if not. */
+int pd_directional_limit(int dim, double *form, double smallest);
+
 /* The factor f(n) of a bond direction (unit n). */
 double pd_directional_factor(int dim, const double *form, const double n[3]);
 
