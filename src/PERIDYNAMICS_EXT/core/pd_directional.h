@@ -1,10 +1,11 @@
-/* Directional correction of a family (opt-in: 'directional_correction yes').
+/* Directional correction of a family ('directional_correction yes', the
+ * default of pd/bond and pd/ordinary).
  *
  * Under a uniform strain eps a bond of direction n stretches by n.eps.n, so
  * a family's elastic energy is a sum over its bonds of mu (n.eps.n)^2, mu
  * the bond's share of the stiffness (weight x partner volume x |xi|^power:
- * power 1 for a bond-based solid, 2 for the ordinary solid's deviatoric
- * energy). The family's constants are those of its fourth moment
+ * power 1 for a bond-based solid, 0 for the ordinary solid's
+ * mu N sum w eps^2 V). The family's constants are those of its fourth moment
  *   M = sum mu n (x) n (x) n (x) n,
  * which a continuum family has isotropic. A lattice family does not (the
  * square lattice's shear at 45 degrees against along the rows), nor does an
