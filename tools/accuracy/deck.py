@@ -68,8 +68,9 @@ def volume(lattice, h):
     return h ** 3 if dims_of(lattice) == 3 else h * h * THICK
 
 
-def header(lattice, h, boundary):
-    """units, dimension, atom style and the lattice command."""
+def header(lattice, h, boundary, orient=""):
+    """units, dimension, atom style and the lattice command (with its
+    orient keywords, if any)."""
     dims, style, a_over_h, _ = LATTICES[base_lattice(lattice)]
     return ("units si\n" + ("dimension 2\n" if dims == 2 else "") +
             f"boundary {boundary}\natom_style peri\natom_modify map array\n" + NEIGHBOR.format(skin=repr(SKIN * h)) +
@@ -77,7 +78,7 @@ def header(lattice, h, boundary):
             # partial-volume quadrature (cutoff past the horizon)
             # overflow LAMMPS's default of 2000
             "neigh_modify one 8000 page 80000\n"
-            f"lattice {style} {a_over_h * h!r}\n")
+            f"lattice {style} {a_over_h * h!r}{orient}\n")
 
 
 def jitter(lattice, h, boundary, seed=4711, amplitude=0.2):
@@ -93,6 +94,16 @@ def jitter(lattice, h, boundary, seed=4711, amplitude=0.2):
     z = "0.0" if dims_of(lattice) == 2 else repr(a)
     return (f"displace_atoms all random {a!r} {a!r} {z} {seed} units box\n"
             "write_data jitter.data\nclear\n" + header(lattice, h, boundary) + "read_data jitter.data\n")
+
+
+def random_volumes(lattice, h, seed, spread):
+    """Every particle's volume drawn uniformly within +-spread of the
+    lattice's (after 'set ... volume'); empty for spread 0."""
+    if not spread:
+        return ""
+    v = volume(lattice, h)
+    return (f"variable vrand atom {v!r}*(1+{spread!r}*(2*random(0,1,{seed})-1))\n"
+            "set group all volume v_vrand\n")
 
 
 def periodic_block(lattice, h, min_length):

@@ -1,22 +1,26 @@
 """Quantity 3: fracture energy released across a plane, by orientation.
 
-A band of material around a plane (normal n at 0, 22.5 and 45 degrees to
-the lattice x axis, in the xy plane; and at 0 degrees in a jittered
-arrangement, every particle moved by up to 0.2 spacings) is separated
-quasi-statically: its two halves move apart rigidly along n (fix move),
-the opening growing geometrically by a factor 1 + r per step from 1e-3
+A band of material around a plane is separated quasi-statically: its two
+halves move apart rigidly along the plane's normal n (fix move), the
+opening growing geometrically by a factor 1 + r per step from 1e-3
 spacings to 1.05 horizons, by which every bond across the plane has
-broken. The energy the bonds dissipated (compute pd/fracture, per atom,
-summed over a window of the plane 2 horizons away from the band's ends;
-where the plane has rows of atoms, the window holds whole rows, else it
-is three times longer, 36 spacings or 12 horizons; the jittered
-arrangement's window is three times longer too, 37 rows: its G is a mean
-over the atoms' offsets, and one arrangement's 13 rows scattered it by
-+-5%)
-divided by the window's area is compared with G_c (PMMA, 400 J/m^2),
-for `fail stretch Gc` and `fail energy Gc`. A bond breaks in the first
-step its stretch (or energy) exceeds the critical one, at most a factor
-1 + r past it: the release is biased up by about r (0.4%).
+broken. Orientations: n at 0, 22.5 and 45 degrees to the lattice's x axis
+(in the xy plane); three orientations off every lattice plane (r1-r3: in
+2D the angles OFF_ANGLES, in 3D the lattice turned by the integer frames
+OFF_FRAMES); and three jittered arrangements (seeds 4711-4713: every
+particle moved by up to 0.25 spacings per component and its volume drawn
+within +-30%), the plane at 0 degrees between the rows the particles came
+from. The energy the bonds dissipated (compute pd/fracture, per atom,
+times each atom's volume, summed over a window of the plane 2 horizons
+away from the band's ends; where the plane has rows of atoms, the window
+holds whole rows, else it is three times longer, 36 spacings or 12
+horizons; the jittered arrangements' windows are three times longer too,
+37 rows: G is then a mean over the atoms' offsets, where one
+arrangement's 13 rows scattered it by +-5%) divided by the window's area
+is compared with G_c (PMMA, 400 J/m^2), for `fail stretch Gc` and `fail
+energy Gc`. A bond breaks in the first step its stretch (or energy)
+exceeds the critical one, at most a factor 1 + r past it: the release is
+biased up by about r (0.4%).
 
 The band is 2 horizons + 1 spacing thick on each side, so every atom
 whose bonds cross the plane has its complete family. 3D: periodic along
@@ -27,16 +31,30 @@ import deck
 NAME = "fracture"
 PRIMARY = "err"
 TITLE = "Fracture energy released across a plane (worst of 4 orientations)"
-ORIENTATIONS = ("0", "22.5", "45", "jitter")
+ORIENTATIONS = ("0", "22.5", "45", "r1", "r2", "r3", "jitter", "jitter2", "jitter3")
 H = 5.0e-4
+# r1-r3, orientations off every lattice plane: in 2D the plane's normal at
+# these angles to the lattice's x axis (in the xy plane) ...
+OFF_ANGLES = {"r1": 17.9, "r2": 37.4, "r3": 61.6}
+# ... in 3D the lattice turned by three orthonormal integer frames (x, y,
+# z: the plane's normal is the box's x, which contains z), none with a
+# lattice plane normal to x
+OFF_FRAMES = {"r1": ((1, 2, 2), (2, 1, -2), (-2, 2, -1)),
+              "r2": ((2, 3, 6), (3, -6, 2), (6, 2, -3)),
+              "r3": ((1, 4, 8), (4, 7, -4), (-8, 4, -1))}
+# the jittered arrangements (three seeds): positions +-0.25 spacings per
+# component, volumes +-30%
+JITTER_SEEDS = {"jitter": 4711, "jitter2": 4712, "jitter3": 4713}
+JITTER_AMPLITUDE, JITTER_VOLUMES = 0.25, 0.3
 
 
 def cases(mode):
     """smoke: one 2D case; short: square at 3 and 4 spacings, sc at 3;
     full: square at 2.5-5 spacings, hex at 3-5, sc at 3 (pd/bond also
     at 4), with pd/ordinary's stretch law in 2D (3D at 3 spacings costs
-    about half a minute per case). Opening steps of 0.4% in every mode:
-    their bias (about +0.4%) is below the smallest target."""
+    about a minute per case), and at 3 spacings fcc and the square
+    lattice in plane strain. Opening steps of 0.4% in every mode: their
+    bias (about +0.4%) is below the smallest target."""
     if mode == "smoke":
         return [{"style": "pd/bond", "law": "stretch", "lattice": "square", "ratio": 3, "r": 0.004, "quadrature": "point"}]
     ratios = {"short": {"square": [3, 4], "sc": [3]},
@@ -57,13 +75,20 @@ def cases(mode):
                 if infl:
                     c["influence"] = infl
                 out.append(c)
+    if mode == "full":
+        out += [{"style": style, "law": law, "lattice": "fcc", "ratio": 3, "r": 0.004, "quadrature": "point"}
+                for style, law in (("pd/bond", "stretch"), ("pd/ordinary", "energy"))]
+        out += [{"style": style, "law": law, "lattice": "square", "ratio": 3, "r": 0.004, "quadrature": "point",
+                 "plane": "plane strain"}
+                for style, law in (("pd/bond", "stretch"), ("pd/ordinary", "energy"), ("pd/ordinary", "stretch"))]
     return out
 
 
 def QUADRATURE(case):
-    """Partial-volume copies of every case but the 3D ones beyond 3
-    spacings (a minute each)."""
-    return deck.dims_of(case["lattice"]) == 2 or case["ratio"] == 3
+    """Partial-volume copies of the plane stress and simple cubic cases
+    but the 3D ones beyond 3 spacings (a minute each)."""
+    return case["lattice"] != "fcc" and "plane" not in case and (
+        deck.dims_of(case["lattice"]) == 2 or case["ratio"] == 3)
 
 
 def group(case):
@@ -71,14 +96,14 @@ def group(case):
 
 
 def family(case):
-    return " ".join(str(case[k]) for k in ("style", "law", "lattice", "influence", "quadrature") if case.get(k))
+    return " ".join(str(case[k]) for k in ("style", "law", "lattice", "plane", "influence", "quadrature") if case.get(k))
 
 
 def row_spacing(lattice, theta, a):
     """Distances between the planes of atoms normal to n and to t (the
     plane's normal and its direction in the xy plane), or None where the
     orientation has no such rows (22.5 degrees, hex at 45)."""
-    if theta in ("0", "jitter"):
+    if theta == "0" or theta in JITTER_SEEDS:
         return {"sc": (a, a), "square": (a, a), "fcc": (a / 2, a / 2),
                 "hex": (a / 2, a * math.sqrt(3) / 2)}[lattice]
     if theta == "45" and lattice != "hex":
@@ -89,9 +114,14 @@ def row_spacing(lattice, theta, a):
 
 def separation(case, theta, h=H):
     """The deck for one orientation; returns (text, window area, steps)."""
-    lattice = case["lattice"] + ("-jitter" if theta == "jitter" else "")
+    jittered = theta in JITTER_SEEDS
+    lattice = case["lattice"] + ("-jitter" if jittered else "")
     dims = deck.dims_of(lattice)
-    ang = 0.0 if theta == "jitter" else math.radians(float(theta))
+    frame = OFF_FRAMES.get(theta) if dims == 3 else None
+    if jittered or frame:
+        ang = 0.0
+    else:
+        ang = math.radians(OFF_ANGLES.get(theta) or float(theta))
     n, t = (math.cos(ang), math.sin(ang)), (-math.sin(ang), math.cos(ang))
     delta = case["ratio"] * h
     a = deck.LATTICES[deck.base_lattice(lattice)][2] * h
@@ -102,7 +132,7 @@ def separation(case, theta, h=H):
     p_n, p_t = row_spacing(deck.base_lattice(lattice), theta, a)
     c0 = 0.5 * p_n if p_n else 0.37 * a
     B = 2 * delta + h
-    W = max(12 * h, 4 * delta) * (3 if theta == "jitter" else 1)
+    W = max(12 * h, 4 * delta) * (3 if jittered else 1)
     if p_t:
         W = (2 * math.ceil(W / (2 * p_t)) + 1) * p_t
     else:
@@ -110,12 +140,14 @@ def separation(case, theta, h=H):
     T = W / 2 + 2 * delta + h
     # periodic along z: longer than twice the bonds' reach (the horizon, and
     # with partial-volume quadrature half a cell diagonal more)
-    nz = math.ceil(2 * (delta + h) / a) + 1
-    lz = nz * a
+    # (a turned lattice repeats along z every |z| lattice constants)
+    period = math.sqrt(sum(c * c for c in frame[2])) * a if frame else a
+    lz = (math.ceil(2 * (delta + h) / period) + (0 if frame else 1)) * period
     ext = B + T + abs(c0) + a
     zr = f"{-0.5 * a!r} {0.5 * a!r}" if dims == 2 else f"0 {lz!r}"
     mat = deck.material()
-    text = deck.header(lattice, h, "s s p")
+    orient = "".join(f" orient {ax} {v[0]} {v[1]} {v[2]}" for ax, v in zip("xyz", frame)) if frame else ""
+    text = deck.header(lattice, h, "s s p", orient)
     text += f"region box block {-ext!r} {ext!r} {-ext!r} {ext!r} {zr} units box\ncreate_box 1 box\n"
 
     def plane(name, s_n, s_t, sign_n, sign_t):
@@ -125,8 +157,10 @@ def separation(case, theta, h=H):
     text += plane("p1", c0 - B, 0, 1, 0) + plane("p2", c0 + B, 0, -1, 0)
     text += plane("p3", 0, -T, 0, 1) + plane("p4", 0, T, 0, -1)
     text += "region band intersect 4 p1 p2 p3 p4\ncreate_atoms 1 region band\n"
-    text += deck.jitter(lattice, h, "s s p")
+    seed = JITTER_SEEDS.get(theta, 0)
+    text += deck.jitter(lattice, h, "s s p", seed=seed, amplitude=JITTER_AMPLITUDE)
     text += f"set group all density {mat['density']}\nset group all volume {deck.volume(lattice, h)!r}\n"
+    text += deck.random_volumes(lattice, h, seed, JITTER_VOLUMES if jittered else 0.0)
     text += deck.pair_lines(case, h, fail=f"fail {case['law']} Gc {mat['Gc']}")
     text += plane("upper", c0, 0, 1, 0)
     text += "group up region upper\ngroup lo subtract all up\n"
@@ -137,11 +171,12 @@ def separation(case, theta, h=H):
              f"variable dxl equal {-0.5 * n[0]!r}*v_u\nvariable dyl equal {-0.5 * n[1]!r}*v_u\n"
              "fix mu up move variable v_dxu v_dyu NULL NULL NULL NULL\n"
              "fix ml lo move variable v_dxl v_dyl NULL NULL NULL NULL\n")
-    # the window: atoms within W/2 of the middle along the plane (all
-    # volumes are equal: energy = V x the sum of dissipated densities)
+    # the window: atoms within W/2 of the middle along the plane (energy:
+    # the sum of the dissipated densities times the volumes)
     text += plane("w1", 0, -W / 2, 0, 1) + plane("w2", 0, W / 2, 0, -1)
     text += "region win intersect 2 w1 w2\ngroup win region win\n"
-    text += ("compute frac all pd/fracture\ncompute gwin win reduce sum c_frac\n"
+    text += ("compute frac all pd/fracture\ncompute vol all property/atom vfrac\n"
+             "variable released atom c_frac*c_vol\ncompute gwin win reduce sum v_released\n"
              "thermo_style custom step v_u c_frac[2] c_frac[3] c_gwin\nthermo_modify format float %.15g\n"
              f"thermo {steps}\ntimestep 1e-9\n")
     text += f"run {steps}\n"
@@ -157,7 +192,7 @@ def measure(case, lmp, workdir):
         text, area, steps = separation(case, theta)
         out, t = deck.run(lmp, text, workdir, name=f"in.fracture.{theta}")
         row = deck.printed(out, "FRAC")[-1]
-        g = float(row[0]) * deck.volume(case["lattice"], H) / area / gc
+        g = float(row[0]) / area / gc
         res[f"G_{theta}"] = g
         worst = max(worst, abs(g - 1))
         secs += sum(t["loop"])

@@ -17,15 +17,16 @@
  *
  * Speed: a row (one atom's bonds) goes in two passes, a vectorizable one
  * that computes every bond's force (gathering the far ends' positions)
- * and a scalar one that adds them onto the far ends (and tallies energy
- * and virial). Rows with a broken or breaking bond, steps that tally
- * per-atom energy and directed materials go bond by bond. Both ways do
- * the same arithmetic in the same order, so the results are the same to
- * the bit (lammps.kernels). The far ends' sums go into a scratch of 4
- * doubles per atom (pd_loop.reaction, pd_sum4.h), added onto f at the end:
- * a bond's reaction is then one 4-wide add instead of three scalar ones
- * (pd/bond 1.13x, pd/ordinary 1.06x at 32^3). The 4th lane keeps the
- * failure law's notes, so that a note rides in the same update. */
+ * and a scalar one that adds them onto the far ends (and tallies the
+ * energies). Rows with a broken or breaking bond and directed materials
+ * go bond by bond. Both ways do the same arithmetic in the same order, so
+ * the results are the same to the bit (lammps.kernels). The far ends'
+ * sums go into a scratch of 4 doubles per atom (pd_loop.reaction,
+ * pd_sum4.h), added onto f at the end: a bond's reaction is then one
+ * 4-wide add instead of three scalar ones (pd/bond 1.13x, pd/ordinary
+ * 1.06x at 32^3). The 4th lane keeps the failure law's notes or, on a
+ * tallied step, the far end's energy, so that they ride in the same
+ * update. */
 #ifndef PD_BOND_LOOP_H
 #define PD_BOND_LOOP_H
 
@@ -103,9 +104,63 @@ PD_INLINE int pd_row_begin(pd_bond *bd, const int *restrict type, int ntypes, in
   return bd->ti * ntypes;
 }
 
+/* The energies a tallied step sums: each intact bond stores ei (per
+ * partner volume) at its owner i and ej at its far end j. The owner's
+ * share of a row, ei vj, goes onto lane k % PD_ENERGY_LANES of the row's
+ * sum (one chain of adds waited on the previous bond's add: 4 cycles a
+ * bond), summed as (0 + 1) + (2 + 3) at the row's end. The far end's,
+ * ej vi, rides in the 4th lane of j's reaction sum when the law keeps no
+ * notes there (pd_energy_in_lane; the total is then the rows' sums plus
+ * every atom's lane, added after the loop), else it goes onto eatom[j]
+ * and, with ei vj, onto a lane of the row's total. */
+enum { PD_ENERGY_LANES = 4 };
+typedef struct pd_row_energy {
+  double total[PD_ENERGY_LANES];    /* (only when not in the lane) */
+  double owner[PD_ENERGY_LANES];
+} pd_row_energy;
+
+PD_INLINE int pd_energy_in_lane(int tallied, int failing, int takes_notes)
+{
+  return tallied && !(failing && takes_notes != PD_NOTES_NONE);
+}
+
+/* One intact bond's energies when they are not in the lane: onto a lane's
+ * total and owner's sum, and onto j's per-atom energy (eatom, or NULL). */
+PD_INLINE void pd_tally_energy(double *total, double *owner, double *restrict eatom, int j,
+                               double vi, double vj, double ei, double ej)
+{
+  *total += ei * vj + ej * vi;
+  *owner += ei * vj;
+  if (eatom) eatom[j] += ej * vi;
+}
+
+/* The virial of the loop's forces on one atom: x (x) F, F = V f (f per
+ * unit volume). Every bond's force is equal and opposite at its two ends
+ * and, but for directed materials, along the bond: summed over the atoms
+ * that received them (owned and ghost), these are the bonds' (x_i - x_j)
+ * (x) F_ij, at a cost per atom instead of per bond. */
+PD_INLINE void pd_atom_virial(pd_tally *t, const double *restrict x, const double *restrict f,
+                              double v)
+{
+  if (t->skip_virial) return;
+  const double F[3] = {v * f[0], v * f[1], v * f[2]};
+  t->virial[0] += x[0] * F[0];
+  t->virial[1] += x[1] * F[1];
+  t->virial[2] += x[2] * F[2];
+  t->virial[3] += x[0] * F[1];
+  t->virial[4] += x[0] * F[2];
+  t->virial[5] += x[1] * F[2];
+}
+
+PD_INLINE double pd_lanes_sum(const double *lane)
+{
+  return (lane[0] + lane[1]) + (lane[2] + lane[3]);
+}
+
 /* One bond of the force loop: decode (broken bonds, recontact), ask the
  * material and the failure law, add the force on i to fi and the reaction
- * on j to its sum (pd_loop.reaction), tally; when 'noting', the law's note
+ * on j to its sum (pd_loop.reaction), tally (the energies onto the row's
+ * lane 'lane', the virial onto the row's tally); when 'noting', the law's note
  * onto row_note and, when 'ends' too, onto j's sum (its 4th lane). The
  * arrays are parameters so that 'restrict' holds (GCC honours it on
  * parameters): the force stores then do not make it reload x or the
@@ -114,10 +169,11 @@ PD_INLINE void
 pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow,
               const double *restrict x, const double xi[3], const double *restrict vol,
               double *restrict reaction, pd_sum4 *fi, pd_bond *bd, int idx, pd_break_sums *sums,
-              pd_tally *tally, pd_failure *fail, void *restrict mat, pd_strain_fn strain,
+              pd_tally *tally, pd_row_energy *re, int lane, pd_failure *fail, void *restrict mat,
+              pd_strain_fn strain,
               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
               pd_law_notes_fn notes, double *row_note, int noting, int ends, int weighted,
-              int tallied, int failing, int directed)
+              int tallied, int in_lane, int failing, int directed)
 {
   pd_bond_load(bd, b, type, trow, x, xi, fail, idx, weighted, failing, 1);
   const double eps = strain(mat, bd);
@@ -139,22 +195,21 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   double fij[3];
   const double tl = directed ? 0.0 : share * bf.tl;
   for (int c = 0; c < 3; c++) fij[c] = directed ? share * bf.v[c] : tl * bd->d[c];
+  /* a breaking bond's energy is booked as dissipated instead */
+  const double ei = share == 1.0 ? bf.stored_i : 0.0, ej = share == 1.0 ? bf.stored_j : 0.0;
   *fi = pd_sum4_axpy(*fi, vj, fij[0], fij[1], fij[2]);
-  pd_add4(reaction + 4 * (ptrdiff_t) j, -vi, fij[0], fij[1], fij[2]);
+  double *restrict rj = reaction + 4 * (ptrdiff_t) j;
+  pd_sum4_store(rj, pd_sum4_axpy4(pd_sum4_load(rj), -vi,
+                                  pd_sum4_make(fij[0], fij[1], fij[2], in_lane ? -ej : 0.0)));
   if (tallied) {
-    /* a breaking bond's energy is booked as dissipated instead */
-    const double ei = share == 1.0 ? bf.stored_i : 0.0, ej = share == 1.0 ? bf.stored_j : 0.0;
-    tally->energy += ei * vj + ej * vi;
-    if (tally->eatom) {
-      tally->eatom[i] += ei * vj;
-      tally->eatom[j] += ej * vi;
-    }
-    const double dij[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
+    if (in_lane) re->owner[lane] += ei * vj;
+    else pd_tally_energy(&re->total[lane], &re->owner[lane], tally->eatom, j, vi, vj, ei, ej);
+    /* (a bond along its direction: the loop takes the virial from the
+     * atoms' summed forces, pd_atom_virial) */
     if (directed) {
+      const double dij[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
       const double fv[3] = {vi * vj * fij[0], vi * vj * fij[1], vi * vj * fij[2]};
       pd_tally_virial_pair(tally, dij, fv);
-    } else {
-      pd_tally_virial(tally, dij, -tl * vi * vj);
     }
   }
   if (failing && !bd->broken) {
@@ -210,8 +265,9 @@ pd_bond_load_ahead(pd_bond *bd, const pd_bond_view *restrict b, const int *restr
 /* The first pass over bonds row .. row+m-1 (of one row): every intact bond's
  * force on i per V_i V_j into g (component c of bond k at c * PD_CHUNK + k)
  * and, for the failure law's note, what it notes (at 3 * PD_CHUNK + k);
- * when 'tallied', its t / |Y| and the energies it stores at both ends (at
- * 4, 5 and 6 * PD_CHUNK + k). No
+ * when 'tallied', the energies it stores at both ends (at 5 and 6 *
+ * PD_CHUNK + k; the far end's negated at 3 * PD_CHUNK + k instead when it
+ * rides in the lane, pd_energy_in_lane). No
  * store that another bond could read, so the compiler vectorizes it (the
  * far ends' positions gathered). Returns nonzero if a bond is broken or
  * might break now or after (the law's screen, _ahead): the caller then
@@ -242,9 +298,9 @@ pd_force_bonds(const pd_bond_view *restrict b, const int *restrict type, int tro
     }
     for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = bf.tl * bd.d[c];
     if (tallied) {
-      g[4 * PD_CHUNK + k] = bf.tl;
       g[5 * PD_CHUNK + k] = bf.stored_i;
-      g[6 * PD_CHUNK + k] = bf.stored_j;
+      if (pd_energy_in_lane(tallied, failing, takes_notes)) g[3 * PD_CHUNK + k] = -bf.stored_j;
+      else g[6 * PD_CHUNK + k] = bf.stored_j;
     }
   }
   return special != 0;
@@ -275,20 +331,21 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
 }
 
 /* The first pass's numbers of bond k as one vector: its force (lanes 0-2)
- * and, when 'ends', its note (lane 3; else 0). */
-PD_INLINE pd_sum4 pd_chunk_record(const double *restrict g, int k, int ends)
+ * and, when 'lane3', what it keeps at 3 * PD_CHUNK + k (its note, or its
+ * far end's energy negated; else 0). */
+PD_INLINE pd_sum4 pd_chunk_record(const double *restrict g, int k, int lane3)
 {
   return pd_sum4_make(g[k], g[PD_CHUNK + k], g[2 * PD_CHUNK + k],
-                      ends ? g[3 * PD_CHUNK + k] : 0.0);
+                      lane3 ? g[3 * PD_CHUNK + k] : 0.0);
 }
 
 /* The same for bonds k .. k+3 at once: four loads and a transpose. */
-PD_INLINE void pd_chunk_records4(const double *restrict g, int k, int ends, pd_sum4 a[4])
+PD_INLINE void pd_chunk_records4(const double *restrict g, int k, int lane3, pd_sum4 a[4])
 {
   const pd_sum4 zero = pd_sum4_make(0.0, 0.0, 0.0, 0.0);
   const pd_sum4 c[4] = {pd_sum4_load(g + k), pd_sum4_load(g + PD_CHUNK + k),
                         pd_sum4_load(g + 2 * PD_CHUNK + k),
-                        ends ? pd_sum4_load(g + 3 * PD_CHUNK + k) : zero};
+                        lane3 ? pd_sum4_load(g + 3 * PD_CHUNK + k) : zero};
   pd_sum4_transpose(c, a);
 }
 
@@ -304,18 +361,23 @@ pd_scatter_bond(pd_sum4 sum_i, pd_sum4 a, int j, const double *restrict vol, dou
     pd_sum4_store(rj, pd_sum4_axpy_note(pd_sum4_load(rj), -vi, a));
   else
     pd_sum4_store(rj, pd_sum4_axpy4(pd_sum4_load(rj), -vi, a));
-  /* (lane 3 then sums notes times volumes: never read) */
+  /* (lane 3 then sums notes or energies times volumes: never read) */
   return pd_sum4_axpy4(sum_i, vol[j], a);
 }
 
 /* A chunk's second pass: pd_scatter_bond for its m bonds, the even ones
  * onto fi[0] and the odd ones onto fi[1], their notes onto the far ends
- * when 'ends'; when 'noting', the largest note onto row_note. */
+ * when 'ends' (their maximum), their far ends' energies (lane 3) when
+ * 'energies' (added; with the owner's onto the lanes of 'owner');
+ * when 'noting', the largest note onto row_note. */
 PD_INLINE void
 pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict g,
                  const double *restrict vol, double vi, double *restrict reaction,
-                 double *row_note, int m, int noting, int ends)
+                 double *row_note, int m, int noting, int ends, int energies, double *owner)
 {
+  const double *restrict ei = g + 5 * PD_CHUNK;
+  double own[PD_ENERGY_LANES];
+  for (int l = 0; energies && l < PD_ENERGY_LANES; l++) own[l] = owner[l];
   const double *restrict note = g + 3 * PD_CHUNK;
   /* (fi's halves as locals: their memory would be loaded and stored again
    * for every bond; the notes' largest four at a time, lane l that of
@@ -325,27 +387,36 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
   int k = 0;
   for (; k + 3 < m; k += 4) {
     pd_sum4 a[4];
-    pd_chunk_records4(g, k, ends, a);
+    pd_chunk_records4(g, k, ends || energies, a);
     if (noting) rn = pd_sum4_max(pd_sum4_load(note + k), rn);
-    for (int c = 0; c < 4; c++)
+    for (int c = 0; c < 4; c++) {
       sum[c & 1] = pd_scatter_bond(sum[c & 1], a[c], far[k + c], vol, vi, reaction, ends);
+      if (energies) own[c] += ei[k + c] * vol[far[k + c]];
+    }
   }
   for (; k < m; k++) {
-    sum[k & 1] = pd_scatter_bond(sum[k & 1], pd_chunk_record(g, k, ends), far[k], vol, vi,
-                                 reaction, ends);
+    sum[k & 1] = pd_scatter_bond(sum[k & 1], pd_chunk_record(g, k, ends || energies), far[k], vol,
+                                 vi, reaction, ends);
+    if (energies) own[k % PD_ENERGY_LANES] += ei[k] * vol[far[k]];
     if (noting) pd_note_max(row_note, note[k]);
   }
   fi[0] = sum[0];
   fi[1] = sum[1];
+  for (int l = 0; energies && l < PD_ENERGY_LANES; l++) owner[l] = own[l];
   for (int c = 0; noting && c < 4; c++) pd_note_max(row_note, pd_sum4_lane(rn, c));
 }
 
 /* Walks every bond once. Directed materials (and every material when
  * bond_by_bond) go bond by bond (pd_force_bond); the others take each row
  * in chunks: the vectorized first pass, then the scalar sums onto i and
- * its (distinct) far ends, the failure law's notes and the energy (total
- * and per atom) and virial tallies, in the same order and with the same
- * arithmetic as bond by bond. The far ends' sums (reaction, nall atoms, zero on entry) are
+ * its (distinct) far ends, the failure law's notes and the energies (total
+ * and per atom), in the same order and with the same arithmetic as bond
+ * by bond. A row tallies onto locals (its energies in lanes,
+ * pd_row_energy), added to the tally at its end: in memory, each bond's
+ * adds waited on the previous bond's stores (the per-atom energy's
+ * far-end store may alias them). The virial is that of each atom's summed
+ * force (pd_atom_virial; directed materials tally it bond by bond). The
+ * far ends' sums (reaction, nall atoms, zero on entry) are
  * added onto f last and zeroed as they are; the notes' maximum (their 4th
  * lane, -inf where none) then goes to pd_failure.note_atom, or for a law
  * that keeps only the largest note, that one to pd_failure.note_largest. */
@@ -367,6 +438,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
   double *restrict note_atom = failing && takes_notes == PD_NOTES_ENDS ? fail->note_atom : NULL;
   const int ends = note_atom != NULL;
   const int noting = ends || (failing && takes_notes == PD_NOTES_LARGEST);
+  const int in_lane = pd_energy_in_lane(tallied, failing, takes_notes);
   double largest = -INFINITY;    /* PD_NOTES_LARGEST: the largest note */
   /* the notes' maximum in the sums' 4th lane: one 4-wide update per bond
    * (the sums come zero and leave zero: no pass of their own to clear them) */
@@ -386,6 +458,9 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
     const int trow = pd_row_begin(&bd, type, ntypes, i);
     const double xi[3] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
     double row_note = -INFINITY;    /* the largest of the row's notes */
+    pd_tally rt = {0.0, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, eatom, tallied ? tally->skip_virial : 1};
+    pd_row_energy re;
+    memset(&re, 0, sizeof re);
     for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
       const int m = n - k0 < PD_CHUNK ? n - k0 : PD_CHUNK;
       /* (one copy of the first pass for one atom type: no type loads) */
@@ -398,44 +473,69 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                                   failing, tallied, repeatable))) {
         /* (a copy per case: a test per bond cost the legacy law 9%) */
         if (ends)
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 1);
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 1, 0, NULL);
         else if (noting)
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 0);
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 0, 0, NULL);
+        else if (in_lane)
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0, 0, 1,
+                           re.owner);
         else
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0, 0);
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0, 0, 0, NULL);
         const int *restrict far = b->far + row + k0;
         /* as pd_force_bond tallies an intact bond, bond after bond (its
          * arithmetic written again here: through shared helpers this
-         * pass ran 6% slower on tallied steps) */
-        for (int k = 0; tallied && k < m; k++) {
-          const int j = far[k];
-          const double vj = vol[j];
-          const double ei = g[5 * PD_CHUNK + k], ej = g[6 * PD_CHUNK + k];
-          tally->energy += ei * vj + ej * vi;
-          if (eatom) {
-            eatom[i] += ei * vj;
-            eatom[j] += ej * vi;
-          }
-          if (tally->skip_virial) continue;
-          const double dij[3] = {-(x[3 * j] - xi[0]), -(x[3 * j + 1] - xi[1]), -(x[3 * j + 2] - xi[2])};
-          pd_tally_virial(tally, dij, -g[4 * PD_CHUNK + k] * vi * vj);
+         * pass ran 6% slower on tallied steps), onto copies of the row's
+         * sums that live in registers (the row's own are in memory: the
+         * bond-by-bond path takes their address) */
+        if (tallied && !in_lane) {
+          pd_row_energy r = re;
+          int k = 0;
+          for (; k + PD_ENERGY_LANES <= m; k += PD_ENERGY_LANES)
+            for (int l = 0; l < PD_ENERGY_LANES; l++)
+              pd_tally_energy(&r.total[l], &r.owner[l], eatom, far[k + l], vi, vol[far[k + l]],
+                              g[5 * PD_CHUNK + k + l], g[6 * PD_CHUNK + k + l]);
+          for (; k < m; k++)
+            pd_tally_energy(&r.total[k % PD_ENERGY_LANES], &r.owner[k % PD_ENERGY_LANES], eatom,
+                            far[k], vi, vol[far[k]], g[5 * PD_CHUNK + k], g[6 * PD_CHUNK + k]);
+          re = r;
         }
         continue;
       }
       for (int k = 0; k < m; k++)
         pd_force_bond(b, type, trow, x, xi, vol, reaction, &fi[k & 1], &bd, row + k0 + k,
-                      &sums, tally, fail, mat, strain, force, breaks_now, breaks_after, notes,
-                      &row_note, noting, ends, weighted, tallied, failing, directed);
+                      &sums, &rt, &re, k % PD_ENERGY_LANES, fail, mat, strain, force, breaks_now,
+                      breaks_after, notes, &row_note, noting, ends, weighted, tallied, in_lane,
+                      failing, directed);
     }
-    for (int c = 0; c < 3; c++) f[3 * i + c] += pd_sum4_lane(fi[0], c) + pd_sum4_lane(fi[1], c);
+    double fsum[3];
+    for (int c = 0; c < 3; c++) {
+      fsum[c] = pd_sum4_lane(fi[0], c) + pd_sum4_lane(fi[1], c);
+      f[3 * i + c] += fsum[c];
+    }
+    if (tallied && !directed) pd_atom_virial(&rt, xi, fsum, vi);
+    if (tallied) {
+      tally->energy += pd_lanes_sum(in_lane ? re.owner : re.total);
+      for (int c = 0; c < 6; c++) tally->virial[c] += rt.virial[c];
+      if (eatom) eatom[i] += pd_lanes_sum(re.owner);
+    }
     if (ends) pd_note_max(reaction + 4 * (ptrdiff_t) i + 3, row_note);
     else if (noting) pd_note_max(&largest, row_note);
   }
+  double far_energy[PD_ENERGY_LANES] = {0.0, 0.0, 0.0, 0.0};    /* (in_lane: atom a's onto lane a % 4) */
+  pd_tally far_virial = {0.0, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, NULL, tallied ? tally->skip_virial : 1};
   for (int a = 0; a < nall; a++) {
     for (int c = 0; c < 3; c++) f[3 * a + c] += reaction[4 * a + c];
+    if (tallied && !directed) pd_atom_virial(&far_virial, x + 3 * a, reaction + 4 * a, vol[a]);
     if (ends) note_atom[a] = reaction[4 * a + 3];
+    if (in_lane) {
+      far_energy[a % PD_ENERGY_LANES] += reaction[4 * a + 3];
+      if (eatom) eatom[a] += reaction[4 * a + 3];
+    }
     for (int c = 0; c < 4; c++) reaction[4 * a + c] = 0.0;    /* (vectorized with the adds) */
   }
+  if (in_lane) tally->energy += pd_lanes_sum(far_energy);
+  if (tallied)
+    for (int c = 0; c < 6; c++) tally->virial[c] += far_virial.virial[c];
   if (failing) pd_add_break_sums(fail, &sums);
   if (failing && takes_notes == PD_NOTES_LARGEST) fail->note_largest = largest;
 }

@@ -40,12 +40,20 @@ static int monomial_index(int dim, const int e[3])
   return index + e[2];
 }
 
-static double power_of(const double n[3], const int e[3])
+/* The powers 0 .. degree of each component of n (a monomial is then
+ * two products: the fits of a 3D body's families took a tenth of a
+ * 600-step run with each monomial multiplied out). */
+static void component_powers(const double n[3], int degree, double p[3][9])
 {
-  double p = 1.0;
-  for (int k = 0; k < 3; k++)
-    for (int q = 0; q < e[k]; q++) p *= n[k];
-  return p;
+  for (int k = 0; k < 3; k++) {
+    p[k][0] = 1.0;
+    for (int q = 1; q <= degree; q++) p[k][q] = p[k][q - 1] * n[k];
+  }
+}
+
+static double monomial_value(double p[3][9], const int e[3])
+{
+  return p[0][e[0]] * p[1][e[1]] * p[2][e[2]];
 }
 
 int pd_directional_terms(int dim)
@@ -61,11 +69,13 @@ int pd_directional_moments(int dim)
 void pd_directional_add(int dim, const double n[3], double mu, double *moments)
 {
   moments[0] += mu;
+  double p[3][9];
+  component_powers(n, 8, p);
   const int count = monomial_count(dim, 8);
   for (int b = 0; b < count; b++) {
     int e[3];
     monomial(dim, 8, b, e);
-    moments[1 + b] += mu * power_of(n, e);
+    moments[1 + b] += mu * monomial_value(p, e);
   }
 }
 
@@ -148,11 +158,13 @@ int pd_directional_fit(int dim, const double *moments, double *form)
 double pd_directional_factor(int dim, const double *form, const double n[3])
 {
   const int count = pd_directional_terms(dim);
+  double p[3][9];
+  component_powers(n, 4, p);
   double f = 0.0;
   for (int a = 0; a < count; a++) {
     int e[3];
     monomial(dim, 4, a, e);
-    f += form[a] * power_of(n, e);
+    f += form[a] * monomial_value(p, e);
   }
   return f;
 }
