@@ -175,8 +175,11 @@ def separation(case, theta, h=H):
     # the sum of the dissipated densities times the volumes)
     text += plane("w1", 0, -W / 2, 0, 1) + plane("w2", 0, W / 2, 0, -1)
     text += "region win intersect 2 w1 w2\ngroup win region win\n"
+    # (the per-atom values pass through fix store/state: older LAMMPS reads
+    # c_frac in an atom-style variable as the compute's global vector)
     text += ("compute frac all pd/fracture\ncompute vol all property/atom vfrac\n"
-             "variable released atom c_frac*c_vol\ncompute gwin win reduce sum v_released\n"
+             f"fix dfrac all store/state {steps} c_frac\n"
+             "variable released atom f_dfrac*c_vol\ncompute gwin win reduce sum v_released\n"
              "thermo_style custom step v_u c_frac[2] c_frac[3] c_gwin\nthermo_modify format float %.15g\n"
              f"thermo {steps}\ntimestep 1e-9\n")
     text += f"run {steps}\n"
