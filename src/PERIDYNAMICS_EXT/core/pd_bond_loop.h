@@ -91,7 +91,8 @@ pd_bond_load(pd_bond *bd, const pd_bond_view *restrict b, const int *restrict ty
     bd->d[0] = x[3 * j] - xi[0];
     bd->d[1] = x[3 * j + 1] - xi[1];
     bd->d[2] = x[3 * j + 2] - xi[2];
-    bd->len = sqrt(bd->d[0] * bd->d[0] + bd->d[1] * bd->d[1] + bd->d[2] * bd->d[2]);
+    bd->len2 = bd->d[0] * bd->d[0] + bd->d[1] * bd->d[1] + bd->d[2] * bd->d[2];
+    bd->len = sqrt(bd->len2);
   }
 }
 
@@ -651,7 +652,8 @@ pd_scatter_sum(double *restrict si, double *restrict sum, int width, const doubl
 PD_INLINE void
 pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si, int width,
                     const double xi[3], pd_bond *bd, int idx, void *mat, pd_strain_fn strain,
-                    pd_bond_strain_value_fn value, int weighted, int failing)
+                    pd_bond_strain_value_fn value, double *restrict keep, int weighted,
+                    int failing)
 {
   const pd_bond_view *restrict b = L->b;
   /* value() writes all width entries of t; zeroing them only keeps the
@@ -660,6 +662,7 @@ pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si,
   for (int c = 0; c < width; c++) t[c] = 0.0;
   pd_bond_load(bd, b, NULL, 0, L->x, xi, L->fail, idx, weighted, failing, 1);
   const double eps = strain(mat, bd);
+  if (keep) keep[idx] = eps;
   if (failing && pd_bond_inactive(L->fail, bd->broken, eps)) return;
   value(mat, bd, eps, t);
   pd_scatter_sum(si, sum, width, t, bd->j, L->vol, L->vol[bd->i]);
@@ -671,7 +674,8 @@ pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si,
 PD_INLINE int
 pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
                      double *restrict tb, void *mat, pd_strain_fn strain,
-                     pd_bond_strain_value_fn value, int weighted, int failing)
+                     pd_bond_strain_value_fn value, double *restrict eb, int weighted,
+                     int failing)
 {
   const pd_bond_view *restrict b = L->b;
   long long broken = 0;    /* (as pd_force_bonds' 'special') */
@@ -680,31 +684,39 @@ pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int
     bd.i = i;
     bd.ti = 0;
     broken |= -(long long) pd_bond_load_ahead(&bd, b, NULL, 0, L->x, xi, row + k, weighted, failing);
-    value(mat, &bd, strain(mat, &bd), tb + k * width);
+    const double eps = strain(mat, &bd);
+    eb[k] = eps;
+    value(mat, &bd, eps, tb + k * width);
   }
   return broken != 0;
 }
 
 /* pd_current_sum_bonds for a chunk in whole vectors (pd_vector_overlap:
- * pd/ordinary 1.03x, its m = 0 1.10x faster at 16^3). */
+ * pd/ordinary 1.03x, its m = 0 1.10x faster at 16^3); the strains into
+ * eb, for a caller that keeps them (a local array: a store into the
+ * caller's, which the compiler cannot tell from the gathered positions,
+ * kept the loop scalar). */
 PD_INLINE int
 pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
                      double *restrict tb, void *mat, pd_strain_fn strain,
-                     pd_bond_strain_value_fn value, int weighted, int failing)
+                     pd_bond_strain_value_fn value, double *restrict eb, int weighted,
+                     int failing)
 {
   const int last = pd_vector_overlap(m);
   if (last < 0)
-    return pd_current_sum_bonds(L, width, xi, i, row, m, tb, mat, strain, value, weighted, failing);
+    return pd_current_sum_bonds(L, width, xi, i, row, m, tb, mat, strain, value, eb, weighted,
+                                failing);
   return pd_current_sum_bonds(L, width, xi, i, row, m - m % PD_VECTOR_BONDS, tb, mat, strain,
-                              value, weighted, failing) ||
+                              value, eb, weighted, failing) ||
          pd_current_sum_bonds(L, width, xi, i, row + last, PD_VECTOR_BONDS, tb + last * width,
-                              mat, strain, value, weighted, failing);
+                              mat, strain, value, eb + last, weighted, failing);
 }
 
 /* The same in the current configuration, over the bonds that act (a broken
  * bond only in compression, with recontact): value(ctx, bond, strain, t)
  * gives 'width' numbers t, added as t V_j onto sum[i * width ..] and t V_i
- * onto sum[j * width ..]. A state-based material's first pass (dilatation,
+ * onto sum[j * width ..]; keep (or NULL) receives every bond's strain, laid
+ * out as the bonds, for a second pass to read back. A state-based material's first pass (dilatation,
  * deformation gradient); types are not loaded. Rows go in chunks as in
  * pd_force_loop_on: a vectorizable pass computes the values, a scalar one
  * adds them in the order and with the arithmetic of bond by bond. The sum
@@ -712,12 +724,13 @@ pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int
  * and 1, 3, ..): a width of 1 waited on one chain of adds. */
 PD_INLINE void
 pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
-                   pd_strain_fn strain, pd_bond_strain_value_fn value, int weighted, int failing)
+                   pd_strain_fn strain, pd_bond_strain_value_fn value, double *restrict keep,
+                   int weighted, int failing)
 {
   const pd_bond_view *restrict b = L->b;
   const double *restrict vol = L->vol;
   pd_bond bd;
-  double tb[PD_CHUNK * PD_MAX_SUM_WIDTH];
+  double tb[PD_CHUNK * PD_MAX_SUM_WIDTH], eb[PD_CHUNK];
   for (int i = 0; i < b->nowner; i++) {
     const int row = i * b->stride, n = b->count[i];
     const double vi = vol[i];
@@ -729,9 +742,11 @@ pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
     const double xi[3] = {L->x[3 * i], L->x[3 * i + 1], L->x[3 * i + 2]};
     for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
       const int m = n - k0 < PD_CHUNK ? n - k0 : PD_CHUNK;
-      if (!pd_current_sum_chunk(L, width, xi, i, row + k0, m, tb, mat, strain, value, weighted,
-                                failing)) {
+      if (!pd_current_sum_chunk(L, width, xi, i, row + k0, m, tb, mat, strain, value, eb,
+                                weighted, failing)) {
         const int *restrict far = b->far + row + k0;
+        if (keep)
+          for (int k = 0; k < m; k++) keep[row + k0 + k] = eb[k];
         int k = 0;
         for (; k + 1 < m; k += 2) {
           pd_scatter_sum(even, sum, width, tb + k * width, far[k], vol, vi);
@@ -742,7 +757,7 @@ pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
       }
       for (int k = 0; k < m; k++)
         pd_current_sum_bond(L, sum, k & 1 ? odd : even, width, xi, &bd, row + k0 + k, mat, strain,
-                            value, weighted, failing);
+                            value, keep, weighted, failing);
     }
     for (int c = 0; c < width; c++) sum[i * width + c] += even[c] + odd[c];
   }
@@ -750,18 +765,26 @@ pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
 
 /* (one copy per weight mode, so that it is a constant in each) */
 PD_INLINE void
-pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd_strain_fn strain,
-                pd_bond_strain_value_fn value, int failing)
+pd_current_sums_keep(const pd_loop *L, double *restrict sum, int width, void *mat,
+                     pd_strain_fn strain, pd_bond_strain_value_fn value, double *restrict keep,
+                     int failing)
 {
   switch (pd_weight_mode(L->b)) {
   case PD_WEIGHT_INVERSE:
-    pd_current_sums_on(L, sum, width, mat, strain, value, PD_WEIGHT_INVERSE, failing);
+    pd_current_sums_on(L, sum, width, mat, strain, value, keep, PD_WEIGHT_INVERSE, failing);
     break;
   case PD_WEIGHT_TABLE:
-    pd_current_sums_on(L, sum, width, mat, strain, value, PD_WEIGHT_TABLE, failing);
+    pd_current_sums_on(L, sum, width, mat, strain, value, keep, PD_WEIGHT_TABLE, failing);
     break;
-  default: pd_current_sums_on(L, sum, width, mat, strain, value, PD_WEIGHT_ONE, failing); break;
+  default: pd_current_sums_on(L, sum, width, mat, strain, value, keep, PD_WEIGHT_ONE, failing); break;
   }
+}
+
+PD_INLINE void
+pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd_strain_fn strain,
+                pd_bond_strain_value_fn value, int failing)
+{
+  pd_current_sums_keep(L, sum, width, mat, strain, value, NULL, failing);
 }
 
 #endif

@@ -34,6 +34,9 @@ typedef struct pd_bond {
   double r0;       /* reference length it acts with */
   double w;        /* quadrature weight (1 without weights) */
   double len;      /* current length (not set in reference walks) */
+  double len2;     /* its square, |Y|^2: the strains of m = 0 and negative
+                      integer m take no square root (the compiler drops
+                      len where nothing reads it) */
   double d[3];     /* x_j - x_i (not set in reference walks) */
 } pd_bond;
 

@@ -198,7 +198,7 @@ PD_INLINE double stretch(void *st, const pd_bond *bd)
 PD_INLINE double strain_log(void *st, const pd_bond *bd)
 {
   (void) st;
-  return pd_bond_log_strain(bd, 0);
+  return pd_bond_log_strain(bd);
 }
 PD_INLINE double strain_any(void *st, const pd_bond *bd)
 {

@@ -35,9 +35,9 @@ typedef struct pd_ordinary_state {
   double *sum;     /* dilatation sums, before normalization */
   const double *ab;/* per atom, interleaved: A = lambda theta N, B = 2 mu N */
   double *strain;  /* per-bond scratch laid out as the bonds, or NULL: for
-                      m other than 1/2 and 0 the dilatation pass stores each
-                      bond's strain there and the force pass reuses it (one
-                      log and expm1 per bond); m = 1/2 and 0 ignore it */
+                      the orders that keep it (pd_ordinary_keeps_strain) the
+                      dilatation pass stores each bond's strain there and
+                      the force pass reuses it; the others ignore it */
   int uniform_b;   /* every atom's B is the same (no surface correction, one
                       B for all types): the m = 1/2 force pass takes the
                       owner's for the far end's instead of gathering it */
