@@ -10,20 +10,22 @@
  * the force loop's (pd_bond_loop.h): a vectorizable pass computes every
  * bond's |C| and closing rate, a scalar one adds them onto both ends; a
  * chunk with a broken bond goes bond by bond, with the same arithmetic in
- * the same order (a check every 10 steps, scalar throughout, cost pd/bond
- * 1.44x the run without it). */
+ * the same order. A check costs about two force steps of pd/bond: the
+ * first pass gathers velocities too and takes two divides. */
 typedef double (*tangent_fn)(const void *mat, const pd_bond *bd);
 
-/* One bond's |C| and closing rate onto i's (si, ci) and j's sums. */
+/* One bond's |C| onto i's sum si and j's, its closing rate onto j's
+ * largest (i's largest is taken apart: a max chain through this loop
+ * went through integer registers, several cycles a bond) */
 PD_INLINE void tangent_scatter(double c, double r, int j, double vi, const double *restrict vol,
-                               double *si, double *ci, double *restrict sum,
-                               double *restrict closing)
+                               double *si, double *restrict sum, double *restrict closing)
 {
   *si += c * vol[j];
   sum[j] += c * vi;
   if (closing) {
-    *ci = r > *ci ? r : *ci;
-    if (r > closing[j]) closing[j] = r;
+    /* (stored either way: no branch on the rates' signs) */
+    const double cj = closing[j];
+    closing[j] = r > cj ? r : cj;
   }
 }
 
@@ -83,15 +85,18 @@ PD_INLINE void tangent_sums_on(const pd_loop *L, const double *v, const void *ma
                     : tangent_bonds(b, NULL, trow, bd.ti, L->x, xi, i, row + k0, m, v, mat, tangent,
                                     c, r, weighted, failing, closes))) {
         for (int k = 0; k < m; k++)
-          tangent_scatter(c[k], r[k], far[k], vi, vol, &si, &ci, sum, closes ? closing : NULL);
+          tangent_scatter(c[k], r[k], far[k], vi, vol, &si, sum, closes ? closing : NULL);
+        if (closes)
+          for (int k = 0; k < m; k++) ci = r[k] > ci ? r[k] : ci;
         continue;
       }
       for (int k = 0; k < m; k++) {
         pd_bond_load(&bd, b, L->type, trow, L->x, xi, L->fail, row + k0 + k, weighted, failing, 1);
         /* the sign of the stretch decides whether a broken bond pushes */
         if (failing && pd_bond_inactive(L->fail, bd.broken, bd.len - bd.r0)) continue;
-        tangent_scatter(tangent(mat, &bd), tangent_rate(v, &bd, closes), bd.j, vi, vol, &si, &ci,
-                        sum, closes ? closing : NULL);
+        const double rate = tangent_rate(v, &bd, closes);
+        tangent_scatter(tangent(mat, &bd), rate, bd.j, vi, vol, &si, sum, closes ? closing : NULL);
+        ci = rate > ci ? rate : ci;
       }
     }
     sum[i] += si;
