@@ -30,7 +30,7 @@ import deck
 
 NAME = "fracture"
 PRIMARY = "err"
-TITLE = "Fracture energy released across a plane (worst of 4 orientations)"
+TITLE = "Fracture energy released across a plane (worst of 9 orientations and arrangements)"
 ORIENTATIONS = ("0", "22.5", "45", "r1", "r2", "r3", "jitter", "jitter2", "jitter3")
 H = 5.0e-4
 # r1-r3, orientations off every lattice plane: in 2D the plane's normal at
