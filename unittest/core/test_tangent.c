@@ -320,6 +320,18 @@ static void jitter(const lattice *l, double amp, unsigned seed, double *x)
  * walk over the bond table. On a
  * jittered block with random velocities, so that every atom's largest
  * comes from some bond in either role. */
+/* -(v_j - v_i).Y / |Y|^2 of the bond i-j */
+static double closing_rate(const double *x, const double *v, int i, int j)
+{
+  double rate = 0.0, len2 = 0.0;
+  for (int a = 0; a < 3; a++) {
+    const double d = x[3 * j + a] - x[3 * i + a];
+    rate -= (v[3 * j + a] - v[3 * i + a]) * d;
+    len2 += d * d;
+  }
+  return rate / len2;
+}
+
 static void closing_rates(void)
 {
   lattice l = lattice_make(3, 6, 5e-4, 2.0001 * 5e-4, PD_INFLUENCE_INVERSE);
@@ -340,13 +352,7 @@ static void closing_rates(void)
   for (int i = 0; i < b.nowner; i++)
     for (int k = 0; k < b.count[i]; k++) {
       const int j = b.far[i * b.stride + k];
-      double d[3], rate = 0.0, len2 = 0.0;
-      for (int a = 0; a < 3; a++) {
-        d[a] = x[3 * j + a] - x[3 * i + a];
-        rate -= (v[3 * j + a] - v[3 * i + a]) * d[a];
-        len2 += d[a] * d[a];
-      }
-      rate /= len2;
+      const double rate = closing_rate(x, v, i, j);
       if (rate > brute[i]) brute[i] = rate;
       if (rate > brute[j]) brute[j] = rate;
     }
@@ -354,13 +360,7 @@ static void closing_rates(void)
   for (int i = 0; i < b.nowner; i++)
     for (int k = 0; k < b.count[i]; k++) {
       const int j = b.far[i * b.stride + k];
-      double rate = 0.0, len2 = 0.0;
-      for (int a = 0; a < 3; a++) {
-        const double d = x[3 * j + a] - x[3 * i + a];
-        rate -= (v[3 * j + a] - v[3 * i + a]) * d;
-        len2 += d * d;
-      }
-      rate /= len2;
+      const double rate = closing_rate(x, v, i, j);
       owners += rate == brute[i];
       far_ends += rate == brute[j];
     }
