@@ -62,8 +62,10 @@ def run(cmd, cwd, output, lock_fd, poll=None, every=0.5):
         raise Interrupted(signal.Signals(signum).name)
     old = {s: signal.signal(s, stop) for s in (signal.SIGINT, signal.SIGTERM)}
     with open(output, "w") as out:
+        # lmp leads a process group of its own, which kill() signals whole
+        # (this runner has no threads: preexec_fn is safe here)
         p = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT,
-                             stdin=subprocess.DEVNULL, start_new_session=True, pass_fds=(lock_fd,))
+                             stdin=subprocess.DEVNULL, preexec_fn=os.setpgrp, pass_fds=(lock_fd,))
         try:
             while p.poll() is None:
                 time.sleep(every)
