@@ -156,8 +156,9 @@ PD_INLINE double pmb_plastic_bond(const void *mat, const pd_bond *bd)
 }
 
 /* kind (pd_order_kind) and whether the ends' stress terms A, B exist
- * (ab) as constants, so that the first pass vectorizes for m = 1/2 and
- * m = 0 (any other order takes libm's logarithm and exponential) */
+ * (ab) as constants, so that the first pass vectorizes for m = 1/2, 0
+ * and the negative integers (any other order takes libm's logarithm and
+ * exponential) */
 PD_INLINE double state_tangent_of(const pd_state_tangent *p, const pd_bond *bd, int kind, int stress)
 {
   const double eps = pd_bond_strain(kind, p->order, bd);
@@ -183,6 +184,8 @@ PD_STATE_BOND(state_half, PD_ORDER_HALF, 0)
 PD_STATE_BOND(state_half_stress, PD_ORDER_HALF, 1)
 PD_STATE_BOND(state_log, PD_ORDER_LOG, 0)
 PD_STATE_BOND(state_log_stress, PD_ORDER_LOG, 1)
+PD_STATE_BOND(state_reciprocal, PD_ORDER_RECIPROCAL, 0)
+PD_STATE_BOND(state_reciprocal_stress, PD_ORDER_RECIPROCAL, 1)
 PD_STATE_BOND(state_any, PD_ORDER_ANY, 0)
 PD_STATE_BOND(state_any_stress, PD_ORDER_ANY, 1)
 #undef PD_STATE_BOND
@@ -203,10 +206,12 @@ void pd_state_tangent_sums(const pd_loop *L, const double *v, const pd_state_tan
   if (mat->ab) {
     if (kind == PD_ORDER_HALF) tangent_sums(L, v, mat, state_half_stress, sum, closing);
     else if (kind == PD_ORDER_LOG) tangent_sums(L, v, mat, state_log_stress, sum, closing);
+    else if (kind == PD_ORDER_RECIPROCAL) tangent_sums(L, v, mat, state_reciprocal_stress, sum, closing);
     else tangent_sums(L, v, mat, state_any_stress, sum, closing);
   } else {
     if (kind == PD_ORDER_HALF) tangent_sums(L, v, mat, state_half, sum, closing);
     else if (kind == PD_ORDER_LOG) tangent_sums(L, v, mat, state_log, sum, closing);
+    else if (kind == PD_ORDER_RECIPROCAL) tangent_sums(L, v, mat, state_reciprocal, sum, closing);
     else tangent_sums(L, v, mat, state_any, sum, closing);
   }
 }
