@@ -22,6 +22,7 @@ extern "C" {
 #include "pd_coefs.h"
 #include "pd_dispersion.h"
 #include "pd_failure.h"
+#include "pd_lattice.h"
 #include "pd_loop.h"
 #include "pd_params.h"
 }
@@ -94,6 +95,15 @@ class PairPD : public Pair, public PDFamilySource {
   // core/pd_calibration.h pd_family_moment), for a calibration; unweighted:
   // sum V |xi|^power
   std::vector<double> family_moments(int power, bool weighted = true) const;
+  // Per type, width sums that 'add' accumulates over a sample of the
+  // type's complete reference families (mark_complete_families), each as
+  // a pd_family with its partners' volumes in the bond weights: one of a
+  // lattice type (its complete families agree), PD_FAMILY_SAMPLE of an
+  // irregular one, chosen by tag, so that every rank count takes the same
+  // ones and sums them in the same order (pair_pd_family_sample.cpp).
+  // Collective; the sums are zero for a type without a complete family.
+  std::vector<double> family_sample_sums(int width,
+                                         const std::function<void(const pd_family &, double *)> &add) const;
   // 'quadrature partial': each bond weighted by the share of its partner's
   // cell inside the horizon (core/pd_quadrature.h)
   bool partial_volumes() const { return quadrature == QUADRATURE_PARTIAL; }
@@ -247,6 +257,8 @@ class PairPD : public Pair, public PDFamilySource {
   // its own family's sums and its calibrated weighted volume (per-atom
   // fields of the bond store, migrating with the atoms)
   void calibrate_families();
+  void mark_complete_families(const std::vector<double> &complete_share, const std::vector<bool> &lattice);
+  std::vector<char> complete_family;    // per owned atom: its family is certainly complete
   // 'directional_correction yes' (core/pd_directional.h,
   // pair_pd_directional.cpp): whether the style offers it, with the power
   // of |xi| in a bond's share w V |xi|^power of the stiffness; and the

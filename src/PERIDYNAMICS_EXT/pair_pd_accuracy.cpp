@@ -139,12 +139,16 @@ void PairPD::report_accuracy(const PDFamilySpec &spec)
     pd_family f;
     if (release < 0 || pd_lattice_family(&lat, spec.reach(t, t), thickness, store_weight, &rule, &f) < 1)
       continue;
+    // an ordinary solid's stretch law: its bond and dilatation parts
+    const bool ordinary = release == PD_RELEASE_ORDINARY_STRETCH;
+    const double dilatation = law->release_dilatation(t);
     const auto across = [&](double deg) {
       const double a = deg * MathConst::MY_PI / 180.0, n[3] = {cos(a), sin(a), 0.0};
-      return pd_release(&f, (pd_release_kind) release, n);
+      return ordinary ? pd_release_ordinary(&f, dilatation, n) : pd_release(&f, (pd_release_kind) release, n);
     };
     double lo, hi;
-    pd_release_range(&f, (pd_release_kind) release, &lo, &hi);
+    if (ordinary) pd_release_ordinary_range(&f, dilatation, &lo, &hi);
+    else pd_release_range(&f, (pd_release_kind) release, &lo, &hi);
     utils::logmesg(lmp, "{}: type {}: a crack releases {:.3f} .. {:.3f} G_c by its orientation (lattice "
                    "sums): normal along x {:.3f}, at 22.5 degrees {:.3f}, at 45 degrees {:.3f}\n",
                    style_name(), t, lo, hi, across(0.0), across(22.5), across(45.0));

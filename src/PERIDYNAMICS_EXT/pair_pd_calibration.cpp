@@ -145,6 +145,7 @@ void PairPD::calibrate_families()
     complete_share[i] = pd_calibration_share(c, family_tolerance[t]);
     share[i] = surface_corrected() ? 1.0 : complete_share[i];
   }
+  mark_complete_families(complete_share, lattice);
   // the bond weights' directional correction, once (it changes the
   // weighted volumes, not the family volumes the shares come from); near
   // a surface on the complete family's, also with the surface correction
@@ -172,14 +173,48 @@ void PairPD::calibrate_families()
                    surface_corrected() ? "surfaces too" : "free surfaces on a complete family", types);
 }
 
+// The atoms whose family is certainly complete, whose sums a type's
+// complete-family values are the medians of. On a lattice, the interior
+// atoms (their sums agree to round-off). On an irregular arrangement, an
+// atom that lost less than the tolerance of its family to a surface is
+// interior too (share 1), and its sums are smaller: in a body a few
+// horizons thick the median over them came out low (pd/bond's critical
+// stretch calibrated on it made jittered hexagonal bands release 5-7% too
+// much); so only interior atoms none of whose partners lost more than the
+// tolerance, which lie about a horizon deeper. A type with no such atom
+// takes its interior ones.
+void PairPD::mark_complete_families(const std::vector<double> &complete_share, const std::vector<bool> &lattice)
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost, n = atom->ntypes + 1;
+  std::vector<double> short_family(nall, 0.0), near_short(nall, 0.0);
+  for (int i = 0; i < nlocal; i++) short_family[i] = complete_share[i] < 1.0;
+  bonds->copy_to_ghosts(short_family.data());
+  bonds->each_reference_bond([&](int i, int j, const double *, double) {
+    near_short[i] = MAX(near_short[i], short_family[j]);
+    near_short[j] = MAX(near_short[j], short_family[i]);
+  });
+  bonds->max_to_owners(near_short.data());
+  complete_family.assign(nlocal, 0);
+  std::vector<double> count(n, 0.0);
+  for (int i = 0; i < nlocal; i++) {
+    const int t = atom->type[i];
+    complete_family[i] = complete_share[i] >= 1.0 && (lattice[t] || near_short[i] == 0.0);
+    count[t] += complete_family[i];
+  }
+  MPI_Allreduce(MPI_IN_PLACE, count.data(), n, MPI_DOUBLE, MPI_SUM, world);
+  for (int i = 0; i < nlocal; i++)
+    if (count[atom->type[i]] == 0.0) complete_family[i] = complete_share[i] >= 1.0;
+}
+
 // In place over the owned atoms: q (a sum over each atom's reference
 // family) becomes s q + (1 - s) q_complete, q_complete the median over the
-// type's interior atoms (s = 1), or the type's largest where none is
-// interior (a body thinner than two horizons). Returns q_complete by type.
+// type's complete families (mark_complete_families), or the type's
+// largest where none is interior (a body thinner than two horizons).
+// Returns q_complete by type.
 std::vector<double> PairPD::calibrate(double *q) const
 {
   const double *share = bonds->field(field_index("family_share"));
-  std::vector<double> complete = type_medians(q, [&](int i) { return share[i] >= 1.0; });
+  std::vector<double> complete = type_medians(q, [&](int i) { return complete_family[i] != 0; });
   std::vector<double> largest(complete.size(), 0.0);
   for (int i = 0; i < atom->nlocal; i++) largest[atom->type[i]] = MAX(largest[atom->type[i]], q[i]);
   MPI_Allreduce(MPI_IN_PLACE, largest.data(), (int) largest.size(), MPI_DOUBLE, MPI_MAX, world);

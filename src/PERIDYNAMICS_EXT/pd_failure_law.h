@@ -123,6 +123,9 @@ class PDFailureLaw : protected Pointers {
   // its G_c; -1: none (no G_c, or the energy of a broken bond depends on
   // more than its geometry)
   virtual int release_kind(int /*t*/) const { return -1; }
+  // PD_RELEASE_ORDINARY_STRETCH: lambda / mu of type t's bond moduli, which
+  // weighs the dilatation's part of the release (pd_release_ordinary)
+  virtual double release_dilatation(int /*t*/) const { return 0.0; }
 
  protected:
   PairPD *pair;

@@ -89,6 +89,12 @@ class LawStretch : public PDFailureLaw {
     return ordinary(t) ? PD_RELEASE_ORDINARY_STRETCH : -1;
   }
 
+  double release_dilatation(int t) const override
+  {
+    double lambda, mu;
+    return ordinary(t) && pair->bond_energies()->bond_moduli(t, lambda, mu) ? lambda / mu : 0.0;
+  }
+
   // Per run: the critical stretch from G_c calibrated on the types'
   // complete families (their median interior sums), as a factor on the
   // continuum's s0, the mean of the two types' factors for a pair. A
@@ -97,12 +103,16 @@ class LawStretch : public PDFailureLaw {
   // ordinary state-based solid: its weighted volume and moment sum
   // w V |xi|, with the bond energy's moduli (pd_critical_stretch_ordinary;
   // the continuum's s0 is the bond-based one, which releases 0.53-0.58 G_c
-  // in 3D and 0.86-0.97 in 2D there). An s0 given as such, legacy PERI, and
+  // in 3D and 0.86-0.97 in 2D there), and the dilatation's share of the
+  // release of the family itself (pd_ordinary_family_release: on a coarse
+  // family larger than the continuum's, 0.244 against 0.196 on the square
+  // lattice at 3 spacings). An s0 given as such, legacy PERI, and
   // correspondence (whose bond energy has neither form) take s0 as it is.
   void setup_run() override
   {
     const int n = atom->ntypes + 1;
     factor.assign(n, 1.0);
+    kappa.clear();
     if (pair->bond_based() && !legacy_mode()) {
       std::vector<double> moment = pair->family_moments(2);
       const std::vector<double> complete = pair->calibrate(moment.data());
@@ -113,11 +123,14 @@ class LawStretch : public PDFailureLaw {
       std::vector<double> moment = pair->family_moments(1);
       const std::vector<double> complete = pair->calibrate(moment.data());
       const PDBondEnergies *m = pair->bond_energies();
-      const double kappa = pd_ordinary_dilatation_release(m->influence_kind(), dim());
+      const std::vector<double> release = pair->family_sample_sums(
+          2, [](const pd_family &f, double *sums) { pd_ordinary_family_release(&f, sums); });
+      kappa.assign(n, pd_ordinary_dilatation_release(m->influence_kind(), dim()));
       for (int t = 1; t < n; t++) {
         double lambda, mu;
         if (!ordinary(t) || !m->bond_moduli(t, lambda, mu)) continue;
-        const double s0 = pd_critical_stretch_ordinary(dim(), table(GC)[t * n + t], lambda, mu, kappa,
+        if (release[2 * t + 1] > 0.0) kappa[t] = release[2 * t] / release[2 * t + 1];
+        const double s0 = pd_critical_stretch_ordinary(dim(), table(GC)[t * n + t], lambda, mu, kappa[t],
                                                        pair->complete_volume(t), complete[t]);
         if (std::isfinite(s0)) factor[t] = s0 / table(S0)[t * n + t];
       }
@@ -141,7 +154,9 @@ class LawStretch : public PDFailureLaw {
     std::string types;
     for (int t = 1; t < n; t++)
       if (given(GC, t, t))
-        types += fmt::format(" type {} s0 {:.4g} (continuum {:.4g});", t, s0[t * n + t], table(S0)[t * n + t]);
+        types += fmt::format(" type {} s0 {:.4g} (continuum {:.4g}{});", t, s0[t * n + t], table(S0)[t * n + t],
+                             kappa.empty() ? ""
+                                           : fmt::format(", dilatation share of the release {:.3f}", kappa[t]));
     if (!types.empty() && (pair->bond_based() || ordinary_any()) && !legacy_mode())
       utils::logmesg(lmp, "{}: fail stretch from G_c, calibrated on the family:{}\n", style(), types);
   }
@@ -165,6 +180,7 @@ class LawStretch : public PDFailureLaw {
   pd_law_stretch params;
   std::vector<double> factor;    // per type: s0 from G_c calibrated on its complete family over the continuum's
   std::vector<double> s0;        // per type pair: the critical stretch of the run
+  std::vector<double> kappa;     // per type: an ordinary solid's dilatation share (none: bond-based)
 
   // the critical stretch of bond-based elasticity (MS07 eq. 28-29) for the
   // pair's E and nu (the material's; between two types, their means)

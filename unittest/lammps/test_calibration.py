@@ -24,10 +24,10 @@ G_c to within the square lattice's own orientation error.
 
 pd/ordinary's critical stretch from G_c is calibrated on the family too
 (its weighted volume, the moment sum w V |xi| and the bond energy's
-moduli, with the continuum's share of the dilatation in the released
-energy): separating the hexagonal (2D) and simple cubic (3D) lattices
+moduli, with the dilatation's share of the released energy on the family's
+own crossing bonds): separating the hexagonal (2D) and simple cubic (3D) lattices
 across planes at 0, 22.5 and 45 degrees and off every lattice plane
-releases G_c within 4% (measured 1.000 .. 1.019 and 1.005 .. 1.021; the
+releases G_c within 4% (measured 0.999 .. 1.017 and 0.992 .. 1.009; the
 bond-based formula it replaces gave 0.95 .. 0.97 and 0.53 .. 0.58)."""
 import math
 import os
@@ -191,13 +191,45 @@ for lattice, orientations in (("hex", ("0", "22.5", "45", "r1", "r2", "r3")), ("
     check_le(f"pd/ordinary fail stretch Gc, {lattice}: G / G_c at every orientation within 4%",
              max(abs(v - 1) for v in gs.values()), 0.04, ", ".join(f"{k}: {v:.3f}" for k, v in gs.items()))
 
-# the energy law on jittered square plates (positions +-0.25 spacings,
-# volumes +-30%, three seeds), separated at 0 degrees
-case = {"style": "pd/ordinary", "law": "energy", "lattice": "square", "ratio": 3, "r": 0.004, "quadrature": "point"}
+# ... in plane strain, where the bond moduli's lambda / mu is 0.67 (PMMA;
+# 0.04 in plane stress), the dilatation's share of the release counts: on
+# the family's own crossing bonds it is 0.244 at 3 spacings, the continuum's
+# 0.20 made plane strain release 2-7% more than plane stress at every
+# orientation (1.025 against 0.979 along the rows, 1.036-1.047 as ratios).
+# The share is calibrated as the orientation average: across a plane of
+# atoms the lattice's own share differs (0.995 against 0.978 along the rows)
+case = {"style": "pd/ordinary", "law": "stretch", "lattice": "square", "ratio": 3, "r": 0.004, "quadrature": "point"}
+stress = separation(case, ("0", "45", "r1"))
+strain = separation(dict(case, plane="plane strain"), ("0", "45", "r1"))
+check_le("pd/ordinary fail stretch Gc, square: plane strain releases what plane stress does (2.5% at each "
+         "orientation)", max(abs(strain[k] / stress[k] - 1) for k in stress), 0.025,
+         ", ".join(f"{k}: {strain[k]:.3f} / {stress[k]:.3f}" for k in stress))
+check_le("... and G_c within 3% at each", max(abs(v - 1) for v in strain.values()), 0.03)
+
+# pd/bond's critical stretch on jittered hexagonal bands (three seeds):
+# calibrated on the median of the complete families, those of atoms whose
+# partners all keep theirs. Taken over every atom of share 1, which
+# includes those that lost up to the tolerance (25% here) of their family
+# to the band's faces, the median was low and the bands released 5-7% too
+# much. A band's G samples its crossing bonds (standard deviation 1.4%
+# over 10 seeds, mean 1.003): the mean of three within 2%, each within 4%
+case = {"style": "pd/bond", "law": "stretch", "lattice": "hex", "ratio": 3, "r": 0.004, "quadrature": "point"}
 g = list(separation(case, ("jitter", "jitter2", "jitter3")).values())
-mean = sum(g) / len(g)
-print("energy law, jittered square plate, G/G_c by seed: " + ", ".join(f"{x:.3f}" for x in g))
-check_le("energy law on a jittered plate releases G_c (mean of 3 seeds)", abs(mean - 1), 0.10,
-         "the square lattice itself releases 0.95 G_c across its rows (lattice sums), and the plane "
-         "between the rows the particles came from keeps the lattice's crossing bonds")
+check_le("pd/bond fail stretch Gc, jittered hex bands: mean G / G_c of three seeds within 2%",
+         abs(sum(g) / len(g) - 1), 0.02, ", ".join(f"{v:.3f}" for v in g))
+check_le("... each within 4%", max(abs(v - 1) for v in g), 0.04)
+
+# the energy law on jittered plates (positions +-0.25 spacings, volumes
+# +-30%, three seeds), separated across a plane off the lattice the
+# particles came from. Across the plane between their former rows, which
+# no particle crosses, each crossing pair counted by its lattice
+# separation along n, not its own: the energy law, whose release is
+# weighted to short bonds, then released 1.053-1.078 G_c on the hexagonal
+# lattice (the lattice itself: 1.008)
+for lattice in ("square", "hex"):
+    case = {"style": "pd/ordinary", "law": "energy", "lattice": lattice, "ratio": 3, "r": 0.004,
+            "quadrature": "point"}
+    g = list(separation(case, ("jitter", "jitter2", "jitter3")).values())
+    check_le(f"energy law on jittered {lattice} plates: mean G / G_c of three seeds within 3%",
+             abs(sum(g) / len(g) - 1), 0.03, ", ".join(f"{x:.3f}" for x in g))
 finish()

@@ -1,6 +1,8 @@
 #include "pd_law_stretch.h"
 
+#include "pd_lattice.h"
 #include "pd_macros.h"
+#include "pd_orientation.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -78,6 +80,44 @@ double pd_ordinary_dilatation_release(pd_influence_kind kind, int dim)
   }
   free(bond);
   return sum / across;
+}
+
+void pd_ordinary_release_at(const pd_family *f, const double n[3], double *pairs, double *across)
+{
+  *pairs = 0.0, *across = 0.0;
+  crossing_bond *bond = malloc(sizeof(crossing_bond) * (f->n > 0 ? f->n : 1));
+  if (!bond) return;
+  double m = 0.0;
+  int nc = 0;
+  for (int b = 0; b < f->n; b++) {
+    const pd_family_bond *e = f->bond + b;
+    const double normal = e->xi[0] * n[0] + e->xi[1] * n[1] + e->xi[2] * n[2], w = e->w * f->volume;
+    m += w;
+    if (!(normal > 0.0) || !(e->r > 0.0)) continue;
+    const double c = normal / e->r;
+    *across += w * normal;
+    bond[nc++] = (crossing_bond){e->r / c, normal, w, c / e->r};
+  }
+  /* (openings equal to round-off break together) */
+  double sum = 0.0;
+  for (int b = 0; b < nc; b++)
+    for (int e = 0; e < nc; e++)
+      if (bond[e].opening >= bond[b].opening * (1.0 - 1e-12))
+        sum += bond[b].weight * bond[b].opening * bond[e].weight * bond[e].strain * fmin(bond[b].normal, bond[e].normal);
+  if (m > 0.0) *pairs = sum * f->dim / m;
+  free(bond);
+}
+
+void pd_ordinary_family_release(const pd_family *f, double sums[2])
+{
+  const int count = PD_RELEASE_NORMALS(f->dim);
+  for (int k = 0; k < count; k++) {
+    double n[3], pairs, across;
+    pd_spread_normal(f->dim, k, count, n);
+    pd_ordinary_release_at(f, n, &pairs, &across);
+    sums[0] += pairs;
+    sums[1] += across;
+  }
 }
 
 double pd_critical_stretch_factor(int dim, double delta, double thickness, double stiffness, double moment2)

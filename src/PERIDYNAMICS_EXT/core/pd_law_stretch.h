@@ -89,8 +89,30 @@ double pd_critical_stretch_ordinary(int dim, double Gc, double lambda, double mu
  * breaks at the opening u where its strain u (xi.n) / |xi|^2 reaches s0;
  * then the dilatation of each end, at depth z, is N sum w eps V over its
  * crossing bonds still intact. Integrated over z, the bonds and their
- * order of breaking on a grid (0.26 in 3D and 0.20 in 2D with omega = 1;
+ * order of breaking on a grid (0.28 in 3D and 0.20 in 2D with omega = 1;
  * independent of s0 and delta). */
 double pd_ordinary_dilatation_release(pd_influence_kind kind, int dim);
+
+/* kappa on a family as the particles have it (the continuum's integral is
+ * its limit at fine resolution: a family of 3 spacings on the square
+ * lattice has 0.244 for 0.196). Per normal n of a spread
+ * (PD_RELEASE_NORMALS: pd_spread_normal; kappa(n) has kinks at the lattice
+ * planes, and 64 normals in 2D made it 1.7% large), a crossing bond b (xi.n > 0) breaks at the
+ * opening |xi| / cos in units of s0 and strains by cos / |xi| per unit
+ * opening; an end at depth z feels the bonds that cross from there (z <
+ * xi.n). So the dilatation part is
+ *   pairs(n) = (d / m) sum over crossing b, b' with b' breaking no earlier
+ *              than b of w_b w_b' (|xi_b| / cos_b) (cos_b' / |xi_b'|) min(xi_b.n, xi_b'.n)
+ * (pairs that break together count both ways: each sees the other intact),
+ * against across(n) = sum over crossing b of w_b |xi_b| cos_b, with w a
+ * bond's weight times its partner's volume and m = sum w. Adds the sums
+ * of pairs(n) and across(n) over the spread to sums[0] and sums[1], so
+ * that kappa = sums[0] / sums[1] over one family or a sample of them. A
+ * family without bonds adds nothing. */
+#define PD_RELEASE_NORMALS(dim) ((dim) == 3 ? 128 : 360)
+struct pd_family;
+void pd_ordinary_family_release(const struct pd_family *f, double sums[2]);
+/* pairs(n) and across(n) of one normal */
+void pd_ordinary_release_at(const struct pd_family *f, const double n[3], double *pairs, double *across);
 
 #endif

@@ -22,7 +22,8 @@ typedef enum pd_release_kind {
    * phi ~ w |xi| */
   PD_RELEASE_BOND_BASED,
   /* an ordinary state-based pair broken at the critical stretch
-   * calibrated on this family (pd_critical_stretch_ordinary): phi ~ w */
+   * calibrated on this family (pd_critical_stretch_ordinary): phi ~ w,
+   * its bond part (with the dilatation's: pd_release_ordinary) */
   PD_RELEASE_ORDINARY_STRETCH
 } pd_release_kind;
 
@@ -33,5 +34,19 @@ double pd_release(const pd_family *f, pd_release_kind kind, const double n[3]);
 /* The smallest and largest G(n) / G_c over orientations: 360 normals in the
  * xy plane (2D) or 4000 spread evenly over the sphere (3D). */
 void pd_release_range(const pd_family *f, pd_release_kind kind, double *lo, double *hi);
+
+/* The same for an ordinary state-based solid broken at the critical
+ * stretch calibrated on this family (pd_critical_stretch_ordinary) with
+ * the dilatation's share of the release taken on it
+ * (pd_ordinary_family_release), lambda / mu of the bond moduli = ratio:
+ * the bond part and the dilatation part (pd_ordinary_release_at) across
+ * n against their calibrated orientation average. The range takes 1000
+ * normals in 3D (each costs a sum over pairs of crossing bonds). */
+double pd_release_ordinary(const pd_family *f, double ratio, const double n[3]);
+void pd_release_ordinary_range(const pd_family *f, double ratio, double *lo, double *hi);
+
+/* The k-th of count unit normals spread evenly over the directions: on the
+ * xy plane's circle (dim 2) or over the sphere (3). */
+void pd_spread_normal(int dim, int k, int count, double n[3]);
 
 #endif
