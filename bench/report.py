@@ -65,7 +65,7 @@ EFFECTS = [
     ("adaptive step", "pd_ordinary_timestep", "pd_ordinary", 1.1),
     ("directional correction", "pd_bond", "pd_bond_no_directional", None),
     ("directional correction", "pd_ordinary", "pd_ordinary_no_directional", None),
-    ("plasticity", "pd_bond_microplastic", "pd_bond", None),
+    ("plasticity", "pd_bond_microplastic", "pd_bond", 1.3),
     ("plasticity", "pd_corr_j2", "pd_corr_classical", None),
     ("correspondence", "pd_corr_classical", "pd_ordinary", None),
     ("correspondence", "pd_corr_extended", "pd_ordinary", None),

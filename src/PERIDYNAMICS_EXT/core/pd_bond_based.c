@@ -62,6 +62,12 @@ typedef struct plastic_ctx {
   const double *vol;
 } plastic_ctx;
 
+/* the force of elastic stretch e = s - sp (s / |Y| = e |xi| / (|xi| |Y|)) */
+PD_INLINE pd_bond_force microplastic_elastic(const plastic_ctx *p, const pd_bond *bd, double e)
+{
+  return pmb_bond(p->pmb->c[bd->tij], e, e * (bd->r0 * pd_bond_inverse(bd)), bd);
+}
+
 /* return map: the elastic stretch s - sp stays within [-sy, sy]; the
  * plastic work 1/2 c sy |d sp| |xi| w per partner volume at each end */
 PD_INLINE pd_bond_force microplastic_force(void *ctx, const pd_bond *bd, double s)
@@ -83,10 +89,27 @@ PD_INLINE pd_bond_force microplastic_force(void *ctx, const pd_bond *bd, double 
       mp->work_atom[bd->j] += 0.5 * wp * vi;
     }
   }
-  return pmb_bond(c, s - *sp, (s - *sp) * (bd->r0 * pd_bond_inverse(bd)), bd);
+  return microplastic_elastic(p, bd, s - *sp);
 }
 
-PD_DEFINE_STATEFUL_KERNELS(microplastic, pmb_strain, microplastic_force)
+/* The first pass's hooks: the force of a bond that does not yield (the
+ * plastic stretch read, not written: the pass vectorizes, and an elastic
+ * scene costs about what pmb does), and whether it yields (its chunk then
+ * goes bond by bond, through the return map above). */
+PD_INLINE pd_bond_force microplastic_ahead(void *ctx, const pd_bond *bd, double s)
+{
+  const plastic_ctx *p = (const plastic_ctx *) ctx;
+  return microplastic_elastic(p, bd, s - p->mp->plastic[bd->idx]);
+}
+
+PD_INLINE int microplastic_yields(void *ctx, const pd_bond *bd, double s)
+{
+  const plastic_ctx *p = (const plastic_ctx *) ctx;
+  return fabs(s - p->mp->plastic[bd->idx]) > p->mp->sy[bd->tij];
+}
+
+PD_DEFINE_STATEFUL_KERNELS(microplastic, pmb_strain, microplastic_force, microplastic_ahead,
+                           microplastic_yields)
 
 void pd_microplastic_forces(const pd_loop *L, const pd_pmb *mat, pd_microplastic *mp)
 {

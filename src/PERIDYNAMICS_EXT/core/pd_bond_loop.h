@@ -48,11 +48,21 @@ typedef int (*pd_breaks_after_fn)(const pd_failure *f, const pd_bond *bd, double
 typedef int (*pd_may_break_fn)(const pd_failure *f, const pd_bond *bd, double eps,
                                const pd_bond_force *bf);
 typedef double (*pd_law_notes_fn)(const pd_failure *f, const pd_bond *bd);
+typedef int (*pd_state_changes_fn)(void *mat, const pd_bond *bd, double eps);
+
+/* A material without a state of its bonds: its state never changes. */
+PD_INLINE int pd_state_kept(void *mat, const pd_bond *bd, double eps)
+{
+  (void) mat, (void) bd, (void) eps;
+  return 0;
+}
 
 /* What a material's force hook is: its force along the bond (plain), not
  * along it (directed: pd_bond_force.v), or along it with a state that the
- * hook updates (stateful: a second call for the same bond would see the
- * first one's update, so no first pass computes a bond twice). */
+ * hook updates (stateful). A stateful material gives the first pass two
+ * hooks more: its force with the state read as it is ('ahead', no store:
+ * the pass vectorizes) and whether the state would change ('changes': the
+ * chunk is then taken bond by bond, through the updating hook). */
 enum { PD_MATERIAL_PLAIN, PD_MATERIAL_DIRECTED, PD_MATERIAL_STATEFUL };
 
 /* How a loop takes each bond's weight: 1, the table, or weight_horizon
@@ -277,8 +287,8 @@ PD_INLINE int
 pd_force_bonds(const pd_bond_view *restrict b, const int *restrict type, int trow, int ti,
                const double *restrict x, const double xi[3], int i, int row, int m,
                double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
-               pd_force_fn force, pd_may_break_fn may_break, pd_law_notes_fn notes,
-               int takes_notes, int weighted, int failing, int tallied)
+               pd_force_fn force, pd_state_changes_fn changes, pd_may_break_fn may_break,
+               pd_law_notes_fn notes, int takes_notes, int weighted, int failing, int tallied)
 {
   /* (64 bits wide, as the tests' masks are: an int made AVX2 pack them;
    * each test negated, so that its mask (-1) is ORed in as it is, not
@@ -291,6 +301,7 @@ pd_force_bonds(const pd_bond_view *restrict b, const int *restrict type, int tro
     special |= -(long long) pd_bond_load_ahead(&bd, b, type, trow, x, xi, row + k, weighted, failing);
     const double eps = strain(mat, &bd);
     const pd_bond_force bf = force(mat, &bd, eps);
+    special |= -(long long) changes(mat, &bd, eps);
     if (failing) {
       special |= -(long long) may_break(fail, &bd, eps, &bf);
       /* (when the law takes notes, whether or not this evaluation keeps
@@ -307,8 +318,7 @@ pd_force_bonds(const pd_bond_view *restrict b, const int *restrict type, int tro
   return special != 0;
 }
 
-/* pd_force_bonds for a chunk in whole vectors (pd_vector_overlap) when
- * 'repeatable' (the material's hook may compute a bond twice). With the
+/* pd_force_bonds for a chunk in whole vectors (pd_vector_overlap). With the
  * scratch's memset gone, per step of the benchmark block in llvm-mca's
  * cycles: pd/ordinary 5.137 M -> 4.867 M, PERI's rule with alpha > 0
  * 3.630 M -> 3.452 M. */
@@ -316,19 +326,19 @@ PD_INLINE int
 pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int trow, int ti,
                const double *restrict x, const double xi[3], int i, int row, int m,
                double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
-               pd_force_fn force, pd_may_break_fn may_break, pd_law_notes_fn notes,
-               int takes_notes, int weighted, int failing, int tallied, int repeatable)
+               pd_force_fn force, pd_state_changes_fn changes, pd_may_break_fn may_break,
+               pd_law_notes_fn notes, int takes_notes, int weighted, int failing, int tallied)
 {
-  const int last = repeatable ? pd_vector_overlap(m) : -1;
+  const int last = pd_vector_overlap(m);
   if (last < 0)
     return pd_force_bonds(b, type, trow, ti, x, xi, i, row, m, g, fail, mat, strain, force,
-                          may_break, notes, takes_notes, weighted, failing, tallied);
+                          changes, may_break, notes, takes_notes, weighted, failing, tallied);
   return pd_force_bonds(b, type, trow, ti, x, xi, i, row, m - m % PD_VECTOR_BONDS, g, fail, mat,
-                        strain, force, may_break, notes, takes_notes, weighted, failing,
+                        strain, force, changes, may_break, notes, takes_notes, weighted, failing,
                         tallied) ||
          pd_force_bonds(b, type, trow, ti, x, xi, i, row + last, PD_VECTOR_BONDS, g + last, fail,
-                        mat, strain, force, may_break, notes, takes_notes, weighted, failing,
-                        tallied);
+                        mat, strain, force, changes, may_break, notes, takes_notes, weighted,
+                        failing, tallied);
 }
 
 /* The first pass's numbers of bond k as one vector: its force (lanes 0-2)
@@ -425,13 +435,14 @@ PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
                  const double *restrict x, const double *restrict vol, double *restrict f,
                  double *restrict reaction, int nall, pd_tally *tally, pd_failure *fail,
-                 void *restrict mat, pd_strain_fn strain, pd_force_fn force,
-                 pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-                 pd_may_break_fn may_break, pd_law_notes_fn notes, int takes_notes,
-                 int weighted, int tallied, int failing, int kind, int bond_by_bond)
+                 void *restrict mat, pd_strain_fn strain, pd_force_fn force, pd_force_fn ahead,
+                 pd_state_changes_fn changes, pd_breaks_now_fn breaks_now,
+                 pd_breaks_after_fn breaks_after, pd_may_break_fn may_break,
+                 pd_law_notes_fn notes, int takes_notes, int weighted, int tallied, int failing,
+                 int kind, int bond_by_bond)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
-  const int directed = kind == PD_MATERIAL_DIRECTED, repeatable = kind == PD_MATERIAL_PLAIN;
+  const int directed = kind == PD_MATERIAL_DIRECTED;
   const int chunked = !directed && !bond_by_bond;
   double *restrict eatom = tallied ? tally->eatom : NULL;
   /* (a local: read through fail, it was loaded again after every
@@ -467,11 +478,11 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       /* (one copy of the first pass for one atom type: no type loads) */
       if (chunked &&
           !(type ? pd_force_chunk(b, type, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, may_break, notes, takes_notes, weighted,
-                                  failing, tallied, repeatable)
+                                  strain, ahead, changes, may_break, notes, takes_notes,
+                                  weighted, failing, tallied)
                  : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
-                                  strain, force, may_break, notes, takes_notes, weighted,
-                                  failing, tallied, repeatable))) {
+                                  strain, ahead, changes, may_break, notes, takes_notes,
+                                  weighted, failing, tallied))) {
         /* (a copy per case: a test per bond cost the legacy law 9%) */
         if (ends)
           pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 1, 0, NULL);
@@ -543,58 +554,60 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
 
 PD_INLINE void
 pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn force,
-              pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
-              pd_may_break_fn may_break, pd_law_notes_fn notes, int takes_notes, int weighted,
-              int tallied, int failing, int kind)
+              pd_force_fn ahead, pd_state_changes_fn changes, pd_breaks_now_fn breaks_now,
+              pd_breaks_after_fn breaks_after, pd_may_break_fn may_break, pd_law_notes_fn notes,
+              int takes_notes, int weighted, int tallied, int failing, int kind)
 {
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->reaction, L->nall, L->tally,
-                   L->fail, mat, strain, force, breaks_now, breaks_after, may_break, notes,
-                   takes_notes, weighted, tallied, failing, kind, L->bond_by_bond);
+                   L->fail, mat, strain, force, ahead, changes, breaks_now, breaks_after,
+                   may_break, notes, takes_notes, weighted, tallied, failing, kind,
+                   L->bond_by_bond);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */
 typedef void (*pd_kernel)(const pd_loop *L, void *mat);
 
-#define PD_KERNEL_(prefix, strain, force, law, failing, weighted, tallied, kind)         \
-  static void prefix##_##law##_##failing##weighted##tallied(const pd_loop *L, void *mat) \
-  {                                                                                       \
-    pd_force_loop(L, mat, strain, force, pd_law_##law##_now, pd_law_##law##_after,        \
-                  pd_law_##law##_ahead, pd_law_##law##_notes,                             \
-                  pd_law_##law##_takes_notes(), weighted, tallied, failing, kind);        \
+#define PD_KERNEL_(prefix, strain, force, ahead, changes, law, failing, weighted, tallied, kind) \
+  static void prefix##_##law##_##failing##weighted##tallied(const pd_loop *L, void *mat)        \
+  {                                                                                              \
+    pd_force_loop(L, mat, strain, force, ahead, changes, pd_law_##law##_now,                     \
+                  pd_law_##law##_after, pd_law_##law##_ahead, pd_law_##law##_notes,              \
+                  pd_law_##law##_takes_notes(), weighted, tallied, failing, kind);               \
   }
-#define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, failing, kind) \
-  PD_KERNEL_(prefix, strain, force, law, failing, 0, 0, kind)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 0, 1, kind)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 1, 0, kind)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 1, 1, kind)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 2, 0, kind)             \
-  PD_KERNEL_(prefix, strain, force, law, failing, 2, 1, kind)
+#define PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, ahead, changes, failing, kind) \
+  PD_KERNEL_(prefix, strain, force, ahead, changes, law, failing, 0, 0, kind)             \
+  PD_KERNEL_(prefix, strain, force, ahead, changes, law, failing, 0, 1, kind)             \
+  PD_KERNEL_(prefix, strain, force, ahead, changes, law, failing, 1, 0, kind)             \
+  PD_KERNEL_(prefix, strain, force, ahead, changes, law, failing, 1, 1, kind)             \
+  PD_KERNEL_(prefix, strain, force, ahead, changes, law, failing, 2, 0, kind)             \
+  PD_KERNEL_(prefix, strain, force, ahead, changes, law, failing, 2, 1, kind)
 #define PD_KERNEL_ROW_(ID, law, prefix, failing)                                      \
   {prefix##_##law##_##failing##00, prefix##_##law##_##failing##01,                    \
    prefix##_##law##_##failing##10, prefix##_##law##_##failing##11,                    \
    prefix##_##law##_##failing##20, prefix##_##law##_##failing##21},
-#define PD_FAILING_KERNELS_(ID, law, prefix, strain, force, kind) \
-  PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, 1, kind)
+#define PD_FAILING_KERNELS_(ID, law, prefix, strain, force, ahead, changes, kind) \
+  PD_KERNELS_OF_LAW_(ID, law, prefix, strain, force, ahead, changes, 1, kind)
 #define PD_FAILING_ROW_(ID, law, prefix) PD_KERNEL_ROW_(ID, law, prefix, 1)
 
 /* Defines prefix_kernels: row 0 for intact bonds only (nothing can be or
  * become broken), then one row per failure law of pd_laws.h; in each row
  * the six combinations of weight mode (PD_WEIGHT_*) and tally. */
-#define PD_DEFINE_KERNELS_(prefix, strain, force, kind)                               \
-  PD_KERNELS_OF_LAW_(NONE, none, prefix, strain, force, 0, kind)                      \
-  PD_FAILURE_LAWS(PD_FAILING_KERNELS_, prefix, strain, force, kind)                   \
-  static const pd_kernel prefix##_kernels[PD_NLAWS + 1][6] = {                       \
+#define PD_DEFINE_KERNELS_(prefix, strain, force, ahead, changes, kind)                  \
+  PD_KERNELS_OF_LAW_(NONE, none, prefix, strain, force, ahead, changes, 0, kind)         \
+  PD_FAILURE_LAWS(PD_FAILING_KERNELS_, prefix, strain, force, ahead, changes, kind)      \
+  static const pd_kernel prefix##_kernels[PD_NLAWS + 1][6] = {                          \
       PD_KERNEL_ROW_(NONE, none, prefix, 0) PD_FAILURE_LAWS(PD_FAILING_ROW_, prefix)};
 #define PD_DEFINE_KERNELS(prefix, strain, force) \
-  PD_DEFINE_KERNELS_(prefix, strain, force, PD_MATERIAL_PLAIN)
+  PD_DEFINE_KERNELS_(prefix, strain, force, force, pd_state_kept, PD_MATERIAL_PLAIN)
 /* The same for a material whose bond force is not along the bond (its
  * force hook fills pd_bond_force.v): the classical correspondence. */
 #define PD_DEFINE_DIRECTED_KERNELS(prefix, strain, force) \
-  PD_DEFINE_KERNELS_(prefix, strain, force, PD_MATERIAL_DIRECTED)
+  PD_DEFINE_KERNELS_(prefix, strain, force, force, pd_state_kept, PD_MATERIAL_DIRECTED)
 /* The same for a material whose force hook updates a state of the bond
- * (microplastic's plastic stretch). */
-#define PD_DEFINE_STATEFUL_KERNELS(prefix, strain, force) \
-  PD_DEFINE_KERNELS_(prefix, strain, force, PD_MATERIAL_STATEFUL)
+ * (microplastic's plastic stretch), with its first pass's hooks: the
+ * force with the state as it is, and whether the state would change. */
+#define PD_DEFINE_STATEFUL_KERNELS(prefix, strain, force, ahead, changes) \
+  PD_DEFINE_KERNELS_(prefix, strain, force, ahead, changes, PD_MATERIAL_STATEFUL)
 
 /* Run the kernel of a table that L asks for: its failure law (or none),
  * the bond view's weight mode, tally when L has one. */
