@@ -165,24 +165,14 @@ void FixPDTimestep::end_of_step()
     return;
   }
   if (travel == 0.0) return;
-  int mine = 0, all;
-  for (int i = 0; i < atom->nlocal && !mine; i++) mine = travels_too_far(i, update->dt);
+  const int nlocal = atom->nlocal;
+  int mine = nlocal ? pd_travel_count(nlocal, atom->v[0], atom->f[0], atom->rmass, atom->vfrac,
+                                      update->dt, force->ftm2v, travel, material->dimension(),
+                                      material->plate_thickness())
+                    : 0,
+      all;
   MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
   if (all) check("travel");
-}
-
-// Whether atom i moves more than 'travel' of its spacing in a step dt, as
-// travel_dt says, without its cube or square root of the volume (the
-// spacing^d is V, or V / thickness in 2D): cheap enough for every step.
-bool FixPDTimestep::travels_too_far(int i, double dt) const
-{
-  const double *v = atom->v[i], *f = atom->f[i];
-  const double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  const double accel = force->ftm2v * sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) / atom->rmass[i];
-  const double moved = (speed * dt + 0.5 * accel * dt * dt) / travel;
-  const int dim = material->dimension();
-  const double cell = dim == 3 ? atom->vfrac[i] : atom->vfrac[i] / material->plate_thickness();
-  return (dim == 3 ? moved * moved * moved : moved * moved) > cell;
 }
 
 // The estimate holds while the arrangement changes little: the step in

@@ -76,7 +76,6 @@ class FixPDTimestep : public Fix {
   void set_dt(double dt);
   double contact_reach() const;
   double travel_dt(int i) const;
-  bool travels_too_far(int i, double dt) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -4,14 +4,16 @@
 #include "pd_seth_hill.h"
 
 #include <math.h>
+#include <string.h>
 
 /* The loop of both materials, with the material's |C| of a bond (its
  * current length and reference length set) inlined. Rows go in chunks as
  * the force loop's (pd_bond_loop.h): a vectorizable pass computes every
  * bond's |C| and closing rate, a scalar one adds them onto both ends; a
  * chunk with a broken bond goes bond by bond, with the same arithmetic in
- * the same order. A check costs about two force steps of pd/bond: the
- * first pass gathers velocities too and takes two divides. */
+ * the same order. A check costs about 1.6 force steps of pd/bond (make
+ * bench's block): the first pass gathers velocities too (six gathers a
+ * vector of bonds to the force pass's three) and takes two divides. */
 typedef double (*tangent_fn)(const void *mat, const pd_bond *bd);
 
 /* One bond's |C| onto i's sum si and j's, its closing rate onto j's
@@ -61,6 +63,38 @@ PD_INLINE int tangent_bonds(const pd_bond_view *restrict b, const int *restrict 
   return broken != 0;
 }
 
+/* max(ci, r[0..m-1]) for rates >= 0, whose bit patterns order as the
+ * numbers do: an integer maximum vectorizes, a floating-point one does
+ * not (it must keep the order of NaNs) */
+PD_INLINE double largest_rate(const double *restrict r, int m, double ci)
+{
+  long long top, bits;
+  memcpy(&top, &ci, sizeof top);
+  for (int k = 0; k < m; k++) {
+    memcpy(&bits, r + k, sizeof bits);
+    top = bits > top ? bits : top;
+  }
+  memcpy(&ci, &top, sizeof ci);
+  return ci;
+}
+
+/* tangent_bonds over a chunk in whole vectors, as pd_force_chunk */
+PD_INLINE int tangent_chunk(const pd_bond_view *restrict b, const int *restrict type, int trow,
+                            int ti, const double *restrict x, const double xi[3], int i, int row,
+                            int m, const double *restrict v, const void *mat, tangent_fn tangent,
+                            double *restrict c, double *restrict r, int weighted, int failing,
+                            int closes)
+{
+  const int last = pd_vector_overlap(m);
+  if (last < 0)
+    return tangent_bonds(b, type, trow, ti, x, xi, i, row, m, v, mat, tangent, c, r, weighted,
+                         failing, closes);
+  return tangent_bonds(b, type, trow, ti, x, xi, i, row, m - m % PD_VECTOR_BONDS, v, mat, tangent,
+                       c, r, weighted, failing, closes) |
+         tangent_bonds(b, type, trow, ti, x, xi, i, row + last, PD_VECTOR_BONDS, v, mat, tangent,
+                       c + last, r + last, weighted, failing, closes);
+}
+
 PD_INLINE void tangent_sums_on(const pd_loop *L, const double *v, const void *mat,
                                tangent_fn tangent, double *restrict sum, double *restrict closing,
                                int weighted, int closes, int failing)
@@ -80,14 +114,13 @@ PD_INLINE void tangent_sums_on(const pd_loop *L, const double *v, const void *ma
       const int m = n - k0 < PD_CHUNK ? n - k0 : PD_CHUNK;
       const int *restrict far = b->far + row + k0;
       /* (one copy for one atom type: no type loads) */
-      if (!(L->type ? tangent_bonds(b, L->type, trow, bd.ti, L->x, xi, i, row + k0, m, v, mat,
+      if (!(L->type ? tangent_chunk(b, L->type, trow, bd.ti, L->x, xi, i, row + k0, m, v, mat,
                                     tangent, c, r, weighted, failing, closes)
-                    : tangent_bonds(b, NULL, trow, bd.ti, L->x, xi, i, row + k0, m, v, mat, tangent,
+                    : tangent_chunk(b, NULL, trow, bd.ti, L->x, xi, i, row + k0, m, v, mat, tangent,
                                     c, r, weighted, failing, closes))) {
         for (int k = 0; k < m; k++)
           tangent_scatter(c[k], r[k], far[k], vi, vol, &si, sum, closes ? closing : NULL);
-        if (closes)
-          for (int k = 0; k < m; k++) ci = r[k] > ci ? r[k] : ci;
+        if (closes) ci = largest_rate(r, m, ci);
         continue;
       }
       for (int k = 0; k < m; k++) {

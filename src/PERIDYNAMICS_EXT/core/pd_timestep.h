@@ -8,4 +8,13 @@
 /* sqrt(2 rho / sum), or +inf for an atom without bonds. */
 double pd_stable_dt(double rho, double sum);
 
+/* How many of n particles (v, f: 3 per particle; mass; volume) move more
+ * than 'travel' of their spacing in a step dt, v dt + |a| dt^2 / 2 with
+ * a = ftm2v f / mass. Compared in the spacing's d-th power (the volume, or
+ * volume / thickness in 2D) so that no root of the volume is taken: cheap
+ * enough for every step. */
+int pd_travel_count(int n, const double *v, const double *f, const double *rmass,
+                    const double *vol, double dt, double ftm2v, double travel, int dim,
+                    double thickness);
+
 #endif
