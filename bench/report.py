@@ -32,7 +32,7 @@ BLOCK_STYLES = [
     "pd_bond_legacy", "pd_bond_legacy_fail", "pd_bond_legacy_fail_alpha",
     "peri_lps", "pd_ordinary", "pd_ordinary_fail_stretch", "pd_ordinary_fail_energy",
     "pd_ordinary_contact", "pd_ordinary_thermo", "pd_ordinary_peratom", "pd_ordinary_timestep", "pd_ordinary_no_directional", "pd_ordinary_m0", "pd_ordinary_m-1", "pd_ordinary_legacy",
-    "pd_corr_classical", "pd_corr_j2", "pd_corr_extended",
+    "pd_corr_classical", "pd_corr_j2", "pd_corr_jc", "pd_corr_extended",
 ]
 # The legacy styles have no bond count of their own in the log (PERI prints
 # each bond twice): they use the families of this style, the same ones
@@ -66,7 +66,8 @@ EFFECTS = [
     ("directional correction", "pd_bond", "pd_bond_no_directional", None),
     ("directional correction", "pd_ordinary", "pd_ordinary_no_directional", None),
     ("plasticity", "pd_bond_microplastic", "pd_bond", 1.3),
-    ("plasticity", "pd_corr_j2", "pd_corr_classical", None),
+    ("plasticity", "pd_corr_j2", "pd_corr_classical", 1.1),
+    ("plasticity", "pd_corr_jc", "pd_corr_classical", 1.1),
     ("correspondence", "pd_corr_classical", "pd_ordinary", None),
     ("correspondence", "pd_corr_extended", "pd_ordinary", None),
     ("legacy mode", "pd_bond_legacy", "pd_bond", None),

@@ -43,7 +43,7 @@ static const int NMODELS = 4;
 
 PairPDCorr::PairPDCorr(LAMMPS *lmp) :
     PairPD(lmp, pd_corr_coefs, PD_CORR_NCOEFS), extended(1), model(-1), influence(-1),
-    stabilization(0.0), order(0.0), spring(nullptr), shape_stale(true)
+    stabilization(0.0), order(0.0), spring(nullptr), shape_stale(true), dead_here(0)
 {
 }
 
@@ -379,10 +379,15 @@ void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, pd_t
 
 // The families' shapes, when bonds may have stopped acting since they were
 // last computed: a new run, bonds broken, reneighboring (lost bonds), and
-// at each step with damage (which switches bonds off).
+// an atom's damage past D_c (which switches its bonds off).
 void PairPDCorr::update_shapes(const pd_loop &L, pd_corr_state st, const Fields &f)
 {
   const int nall = atom->nlocal + atom->nghost;
+  if (st.damage) {
+    dead_at_shapes.resize(nall);
+    dead_here = 0;
+    for (int i = 0; i < nall; i++) dead_here += dead_at_shapes[i] = st.damage[i] > st.damage_max;
+  }
   const int width = extended ? PD_CORR_SHAPE_SUMS_EXTENDED : PD_CORR_SHAPE_SUMS_CLASSICAL;
   for (bigint k = 0; k < (bigint) nall * width; k++) f.shape_sums[k] = 0.0;
   st.sum = f.shape_sums;
@@ -391,6 +396,19 @@ void PairPDCorr::update_shapes(const pd_loop &L, pd_corr_state st, const Fields 
   for (int i = 0; i < atom->nlocal; i++)
     pd_corr_shape(&st, f.shape_sums + (bigint) width * i, f.shape + (bigint) PD_CORR_SHAPE * i);
   shape_stale = false;
+}
+
+// Whether an atom (owned or ghost) crossed D_c since the shapes were
+// computed, on any rank (collective: the ranks then recompute them
+// together). Damage below D_c leaves every bond acting, so the shapes stay
+// those of the last computation, to the bit.
+bool PairPDCorr::dead_changed(const pd_corr_state &st) const
+{
+  const int nall = atom->nlocal + atom->nghost;
+  int mine = (int) dead_at_shapes.size() != nall, all;
+  for (int i = 0; i < nall && !mine; i++) mine = (st.damage[i] > st.damage_max) != (dead_at_shapes[i] != 0);
+  MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
+  return all != 0;
 }
 
 void PairPDCorr::compute(int eflag, int vflag)
@@ -414,8 +432,12 @@ void PairPDCorr::compute(int eflag, int vflag)
   Evaluation e;
   begin_evaluation(e);
   // bonds the store dropped as lost leave their families at reneighboring
-  if (shape_stale || damage() || neighbor->ago == 0 || (e.fails && e.fail.replay))
+  const bool crossed = damage() && dead_changed(st);
+  if (shape_stale || crossed || neighbor->ago == 0 || (e.fails && e.fail.replay))
     update_shapes(e.L, st, f);
+  // no atom here past D_c: every bond acts, and the loops without the
+  // damage test give the same numbers
+  if (st.damage && dead_here == 0) st.damage = nullptr;
   for (bigint k = 0; k < (bigint) nall * width; k++) f.sums[k] = 0.0;
   st.sum = f.sums;
   pd_corr_sums(&e.L, &st);

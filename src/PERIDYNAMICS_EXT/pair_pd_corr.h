@@ -49,6 +49,10 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   std::vector<pd_corr_material> material;   // per type
   double *spring;        // per type pair: PMB micromodulus
   bool shape_stale;      // the families' shapes (field corr_shape) need recomputing
+  // with damage: which atoms (owned + ghost) were beyond D_c when the
+  // shapes were computed (a bond counts while neither end is)
+  std::vector<char> dead_at_shapes;
+  int dead_here;         // how many of them were
 
   int parse_setting(int, char **, int) override;
   void check_coeff(int, int) override;
@@ -85,6 +89,7 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   pd_corr_state state(const Fields &f);
   void atom_step(int i, const pd_corr_state &st, const Fields &f, pd_tally &t);
   void update_shapes(const pd_loop &L, pd_corr_state st, const Fields &f);
+  bool dead_changed(const pd_corr_state &st) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -3,7 +3,7 @@ lattice rows against its speed across them.
 
 A PMMA strip (plane stress, 60 mm x 20 mm, 1 mm thick) pre-cracked from
 its left edge to 15 mm on its mid-line is stretched uniformly so that the
-energy release rate of a long strip, W H, is 1.3 G_c, and held by grips
+energy release rate of a long strip, W H, is 2.5 G_c, and held by grips
 one horizon deep; the crack runs along x. The same strip is built twice:
 with the lattice rows along x, and with the lattice turned (45 degrees
 for the square lattice, 30 degrees, the direction farthest from any row,

@@ -61,9 +61,11 @@ static int neohookean(const pd_corr_material *mat, double m, const double E[6], 
 double pd_corr_flow_stress(const pd_corr_material *mat, double eps_p, double rate, double temp)
 {
   if (mat->model == PD_CORR_J2) return mat->yield + mat->hardening * eps_p;
-  const double eps0 = pow(mat->yield / mat->jc_b, 1.0 / mat->jc_n);
-  double y = mat->yield * pow(1.0 + eps_p / eps0, mat->jc_n) *
-      (1.0 + mat->jc_c * asinh(rate / (2.0 * mat->jc_rate0)));
+  /* (each factor is exactly 1 at eps_p = 0 and rate = 0: the yield check
+   * of an atom that never yielded takes no power and no asinh) */
+  double y = mat->yield;
+  if (eps_p > 0.0) y *= pow(1.0 + eps_p / pow(mat->yield / mat->jc_b, 1.0 / mat->jc_n), mat->jc_n);
+  if (rate > 0.0) y *= 1.0 + mat->jc_c * asinh(rate / (2.0 * mat->jc_rate0));
   if (mat->thermal) {
     const double homologous = fmin(fmax((temp - mat->t_room) / (mat->t_melt - mat->t_room), 0.0), 1.0);
     y *= 1.0 - pow(homologous, mat->t_exp);
