@@ -45,7 +45,7 @@
    the 512 atoms pass mid-run, the run that recomputes the families'
    shapes when an atom passes Dc ends where the run that recomputes them
    at every step (reneighboring at every step) ends, to 1e-10 (measured
-   4e-14; with the shapes left stale: 0.87). 'comm_modify cutoff' of 6
+   4e-14; with the shapes left stale: 0.87), and 2 ranks end there too. 'comm_modify cutoff' of 6
    spacings: with the small skin bonds stretched by 15% would leave the
    ghost cutoff and be dropped as lost (at different steps in the two
    runs); the test asserts that no bond is lost.
@@ -433,10 +433,11 @@ for name, pair, rho, fields in RESTART_VARIANTS:
     # atoms' neighbours by O(1).
     dc = " Dc 0.8 horizon"
     runs = {}
-    for label, neigh in (("once", NEIGH), ("every", NEIGH.replace("check yes", "check no"))):
+    for label, neigh, np in (("once", NEIGH, 1), ("every", NEIGH.replace("check yes", "check no"), 1),
+                             ("once2", NEIGH, 2)):
         runs[label], _ = run(HEAD.replace(NEIGH, neigh) + motion(rho) + pair.replace(" horizon", dc) + comp +
                              steps.format(dt=dt) + "run 40\n" + dump.format(f=f"{label}.{tag}"), d,
-                             name=f"in.{label}.{tag}")
+                             ranks=np, name=f"in.{label}.{tag}")
     damage = [v[6 + fields.index("jc_damage")] for v in read_dump(f"{d}/once.{tag}").values()]
     dead = sum(v > 0.8 for v in damage)
     check("Johnson-Cook, Dc 0.8: some atoms pass Dc within the run, not all", 0 < dead < len(damage),
@@ -444,6 +445,11 @@ for name, pair, rho, fields in RESTART_VARIANTS:
     ex, ef, eh, ee = compare("once", runs["once"], "every", runs["every"])
     check_le(f"{name}, Dc 0.8: shapes recomputed at every step = recomputed when an atom passes Dc "
              "(x, f, fields, ke/pe)", max(ex, ef, eh, ee), 1e-10, "round-off of reordered sums")
+    # the ranks decide together (an atom passes on one, the shapes change on both)
+    ex, ef, eh, ee = compare("once", runs["once"], "once2", runs["once2"])
+    check("2 ranks ran", "on 2 procs" in runs["once2"])
+    check_le(f"{name}, Dc 0.8: 2 ranks = 1 rank (x, f, fields, ke/pe)", max(ex, ef, eh, ee), 1e-10,
+             "round-off of reordered sums")
 
 # ----------------------------------------------------------------------
 # 3. zero-energy mode: the checkerboard
