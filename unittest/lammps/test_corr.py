@@ -45,7 +45,8 @@
    the 512 atoms pass mid-run, the run that recomputes the families'
    shapes when an atom passes Dc ends where the run that recomputes them
    at every step (reneighboring at every step) ends, to 1e-10 (measured
-   4e-14; with the shapes left stale: 0.87), and 2 ranks end there too. 'comm_modify cutoff' of 6
+   4e-14; with the shapes left stale: 0.87), and 2 ranks end there too.
+   'comm_modify cutoff' of 6
    spacings: with the small skin bonds stretched by 15% would leave the
    ghost cutoff and be dropped as lost (at different steps in the two
    runs); the test asserts that no bond is lost.
