@@ -181,9 +181,8 @@ void FixPDTimestep::end_of_step()
 double FixPDTimestep::travel_dt(int i) const
 {
   if (travel == 0.0) return INFINITY;
-  const double *v = atom->v[i], *f = atom->f[i];
-  const double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  const double accel = force->ftm2v * sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) / atom->rmass[i];
+  double speed, accel;
+  pd_particle_motion(atom->v[i], atom->f[i], atom->rmass[i], force->ftm2v, &speed, &accel);
   const double reach =
       travel * 2.0 * pd_contact_radius(material->dimension(), atom->vfrac[i], material->plate_thickness());
   // the positive root of accel/2 dt^2 + speed dt - reach = 0, without cancellation

@@ -22,6 +22,7 @@
 #include "pd_fracture_record.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -43,7 +44,7 @@ static const int NMODELS = 4;
 
 PairPDCorr::PairPDCorr(LAMMPS *lmp) :
     PairPD(lmp, pd_corr_coefs, PD_CORR_NCOEFS), extended(1), model(-1), influence(-1),
-    stabilization(0.0), order(0.0), spring(nullptr), shape_stale(true), dead_here(0)
+    stabilization(0.0), order(0.0), spring(nullptr), shape_stale(true)
 {
 }
 
@@ -385,8 +386,7 @@ void PairPDCorr::update_shapes(const pd_loop &L, pd_corr_state st, const Fields 
   const int nall = atom->nlocal + atom->nghost;
   if (st.damage) {
     dead_at_shapes.resize(nall);
-    dead_here = 0;
-    for (int i = 0; i < nall; i++) dead_here += dead_at_shapes[i] = st.damage[i] > st.damage_max;
+    for (int i = 0; i < nall; i++) dead_at_shapes[i] = pd_corr_past_damage(&st, i);
   }
   const int width = extended ? PD_CORR_SHAPE_SUMS_EXTENDED : PD_CORR_SHAPE_SUMS_CLASSICAL;
   for (bigint k = 0; k < (bigint) nall * width; k++) f.shape_sums[k] = 0.0;
@@ -406,7 +406,7 @@ bool PairPDCorr::dead_changed(const pd_corr_state &st) const
 {
   const int nall = atom->nlocal + atom->nghost;
   int mine = (int) dead_at_shapes.size() != nall, all;
-  for (int i = 0; i < nall && !mine; i++) mine = (st.damage[i] > st.damage_max) != (dead_at_shapes[i] != 0);
+  for (int i = 0; i < nall && !mine; i++) mine = pd_corr_past_damage(&st, i) != dead_at_shapes[i];
   MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
   return all != 0;
 }
@@ -435,9 +435,11 @@ void PairPDCorr::compute(int eflag, int vflag)
   const bool crossed = damage() && dead_changed(st);
   if (shape_stale || crossed || neighbor->ago == 0 || (e.fails && e.fail.replay))
     update_shapes(e.L, st, f);
-  // no atom here past D_c: every bond acts, and the loops without the
-  // damage test give the same numbers
-  if (st.damage && dead_here == 0) st.damage = nullptr;
+  // no atom here past D_c (the shapes' flags are the current ones now):
+  // every bond acts, and the loops without the damage test give the same
+  // numbers
+  if (st.damage && std::find(dead_at_shapes.begin(), dead_at_shapes.end(), 1) == dead_at_shapes.end())
+    st.damage = nullptr;
   for (bigint k = 0; k < (bigint) nall * width; k++) f.sums[k] = 0.0;
   st.sum = f.sums;
   pd_corr_sums(&e.L, &st);

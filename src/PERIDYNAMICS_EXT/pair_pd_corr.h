@@ -52,7 +52,6 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   // with damage: which atoms (owned + ghost) were beyond D_c when the
   // shapes were computed (a bond counts while neither end is)
   std::vector<char> dead_at_shapes;
-  int dead_here;         // how many of them were
 
   int parse_setting(int, char **, int) override;
   void check_coeff(int, int) override;

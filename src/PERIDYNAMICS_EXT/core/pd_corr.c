@@ -58,7 +58,7 @@ const pd_coef pd_corr_coefs[PD_CORR_NCOEFS] = {
 PD_INLINE int
 alive(const pd_corr_state *st, const pd_bond *bd, int damaged)
 {
-  return !damaged || (st->damage[bd->i] <= st->damage_max && st->damage[bd->j] <= st->damage_max);
+  return !damaged || !(pd_corr_past_damage(st, bd->i) || pd_corr_past_damage(st, bd->j));
 }
 
 /* The reference vector of a bond that counts in its atoms' sums; NULL,

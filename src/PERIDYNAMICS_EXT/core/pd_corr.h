@@ -80,6 +80,13 @@ typedef struct pd_corr_state {
   double damage_max;      /* D_c */
 } pd_corr_state;
 
+/* Whether atom i's damage is beyond D_c: its bonds neither count in the
+ * sums nor act (T14 eq. 7.2). st->damage must be set. */
+static inline int pd_corr_past_damage(const pd_corr_state *st, int i)
+{
+  return !(st->damage[i] <= st->damage_max);
+}
+
 /* The shape sums of every atom (owned + ghost; the caller zeroes st->sum,
  * width PD_CORR_SHAPE_SUMS_*, and sums the ghosts' share onto owners):
  * once, and again after bonds stopped acting. */

@@ -14,9 +14,8 @@ static inline int travel_count(int n, const double *restrict v, const double *re
 {
   int count = 0;
   for (int i = 0; i < n; i++) {
-    const double *vi = v + 3 * i, *fi = f + 3 * i;
-    const double speed = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
-    const double accel = ftm2v * sqrt(fi[0] * fi[0] + fi[1] * fi[1] + fi[2] * fi[2]) / rmass[i];
+    double speed, accel;
+    pd_particle_motion(v + 3 * i, f + 3 * i, rmass[i], ftm2v, &speed, &accel);
     const double moved = (speed * dt + 0.5 * accel * dt * dt) / travel;
     const double cell = dim == 3 ? vol[i] : vol[i] / thickness;
     count += (dim == 3 ? moved * moved * moved : moved * moved) > cell;
