@@ -46,6 +46,14 @@ CASES = {
                              "pair_coeff * * pmb K 14.9e9 horizon 0.0015001\n"
                              "pair_coeff 1 1 microplastic K 14.9e9 horizon 0.0015001 "
                              "yield_stretch 0.0003\n"),
+    # pd/corr: classical's force is not along the bond (its first pass
+    # stores the force's components), extended's is
+    "pd/corr classical stretch": ("pair_style pd/corr strain classical model elastic\n"
+                                  "pair_coeff * * K 14.9e9 G 8.94e9 horizon 0.0015001 "
+                                  "fail stretch 0.0004\n"),
+    "pd/corr extended energy": ("pair_style pd/corr model elastic\n"
+                                "pair_coeff * * K 14.9e9 G 8.94e9 horizon 0.0015001 "
+                                "fail energy Gc 0.2\n"),
 }
 YIELDS = {"pd/bond microplastic"}
 

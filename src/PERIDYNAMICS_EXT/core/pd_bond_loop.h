@@ -18,9 +18,9 @@
  * Speed: a row (one atom's bonds) goes in two passes, a vectorizable one
  * that computes every bond's force (gathering the far ends' positions)
  * and a scalar one that adds them onto the far ends (and tallies the
- * energies). Rows with a broken or breaking bond and directed materials
- * go bond by bond. Both ways do the same arithmetic in the same order, so
- * the results are the same to the bit (lammps.kernels). The far ends'
+ * energies). Rows with a broken or breaking bond go bond by bond. Both
+ * ways do the same arithmetic in the same order, so the results are the
+ * same to the bit (lammps.kernels). The far ends'
  * sums go into a scratch of 4 doubles per atom (pd_loop.reaction,
  * pd_sum4.h), added onto f at the end: a bond's reaction is then one
  * 4-wide add instead of three scalar ones (pd/bond 1.13x, pd/ordinary
@@ -146,18 +146,25 @@ PD_INLINE void pd_tally_energy(double *total, double *owner, double *restrict ea
 }
 
 /* The virial of the loop's forces on one atom: x (x) F, F = V f (f per
- * unit volume). Every bond's force is equal and opposite at its two ends
- * and, but for directed materials, along the bond: summed over the atoms
- * that received them (owned and ghost), these are the bonds' (x_i - x_j)
- * (x) F_ij, at a cost per atom instead of per bond. */
+ * unit volume). Every bond's force is equal and opposite at its two ends:
+ * summed over the atoms that received them (owned and ghost), these are
+ * the bonds' (x_i - x_j) (x) F_ij, at a cost per atom instead of per bond.
+ * A bond along its direction makes that tensor symmetric; a directed
+ * material's (not along the bond) is symmetrized. */
 PD_INLINE void pd_atom_virial(pd_tally *t, const double *restrict x, const double *restrict f,
-                              double v)
+                              double v, int directed)
 {
   if (t->skip_virial) return;
   const double F[3] = {v * f[0], v * f[1], v * f[2]};
   t->virial[0] += x[0] * F[0];
   t->virial[1] += x[1] * F[1];
   t->virial[2] += x[2] * F[2];
+  if (directed) {
+    t->virial[3] += 0.5 * (x[0] * F[1] + x[1] * F[0]);
+    t->virial[4] += 0.5 * (x[0] * F[2] + x[2] * F[0]);
+    t->virial[5] += 0.5 * (x[1] * F[2] + x[2] * F[1]);
+    return;
+  }
   t->virial[3] += x[0] * F[1];
   t->virial[4] += x[0] * F[2];
   t->virial[5] += x[1] * F[2];
@@ -215,13 +222,8 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   if (tallied) {
     if (in_lane) re->owner[lane] += ei * vj;
     else pd_tally_energy(&re->total[lane], &re->owner[lane], tally->eatom, j, vi, vj, ei, ej);
-    /* (a bond along its direction: the loop takes the virial from the
-     * atoms' summed forces, pd_atom_virial) */
-    if (directed) {
-      const double dij[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
-      const double fv[3] = {vi * vj * fij[0], vi * vj * fij[1], vi * vj * fij[2]};
-      pd_tally_virial_pair(tally, dij, fv);
-    }
+    /* (the loop takes the virial from the atoms' summed forces,
+     * pd_atom_virial) */
   }
   if (failing && !bd->broken) {
     if (noting) {
@@ -288,7 +290,8 @@ pd_force_bonds(const pd_bond_view *restrict b, const int *restrict type, int tro
                const double *restrict x, const double xi[3], int i, int row, int m,
                double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                pd_force_fn force, pd_state_changes_fn changes, pd_may_break_fn may_break,
-               pd_law_notes_fn notes, int takes_notes, int weighted, int failing, int tallied)
+               pd_law_notes_fn notes, int takes_notes, int weighted, int failing, int tallied,
+               int directed)
 {
   /* (64 bits wide, as the tests' masks are: an int made AVX2 pack them;
    * each test negated, so that its mask (-1) is ORed in as it is, not
@@ -308,7 +311,7 @@ pd_force_bonds(const pd_bond_view *restrict b, const int *restrict type, int tro
        * them: a run-time condition here stopped the vectorizer) */
       if (takes_notes) g[3 * PD_CHUNK + k] = notes(fail, &bd);
     }
-    for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = bf.tl * bd.d[c];
+    for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = directed ? bf.v[c] : bf.tl * bd.d[c];
     if (tallied) {
       g[5 * PD_CHUNK + k] = bf.stored_i;
       if (pd_energy_in_lane(tallied, failing, takes_notes)) g[3 * PD_CHUNK + k] = -bf.stored_j;
@@ -327,18 +330,20 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
                const double *restrict x, const double xi[3], int i, int row, int m,
                double *restrict g, const pd_failure *fail, void *restrict mat, pd_strain_fn strain,
                pd_force_fn force, pd_state_changes_fn changes, pd_may_break_fn may_break,
-               pd_law_notes_fn notes, int takes_notes, int weighted, int failing, int tallied)
+               pd_law_notes_fn notes, int takes_notes, int weighted, int failing, int tallied,
+               int directed)
 {
   const int last = pd_vector_overlap(m);
   if (last < 0)
     return pd_force_bonds(b, type, trow, ti, x, xi, i, row, m, g, fail, mat, strain, force,
-                          changes, may_break, notes, takes_notes, weighted, failing, tallied);
+                          changes, may_break, notes, takes_notes, weighted, failing, tallied,
+                          directed);
   return pd_force_bonds(b, type, trow, ti, x, xi, i, row, m - m % PD_VECTOR_BONDS, g, fail, mat,
                         strain, force, changes, may_break, notes, takes_notes, weighted, failing,
-                        tallied) ||
+                        tallied, directed) ||
          pd_force_bonds(b, type, trow, ti, x, xi, i, row + last, PD_VECTOR_BONDS, g + last, fail,
                         mat, strain, force, changes, may_break, notes, takes_notes, weighted,
-                        failing, tallied);
+                        failing, tallied, directed);
 }
 
 /* The first pass's numbers of bond k as one vector: its force (lanes 0-2)
@@ -426,11 +431,11 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
  * pd_row_energy), added to the tally at its end: in memory, each bond's
  * adds waited on the previous bond's stores (the per-atom energy's
  * far-end store may alias them). The virial is that of each atom's summed
- * force (pd_atom_virial; directed materials tally it bond by bond). The
- * far ends' sums (reaction, nall atoms, zero on entry) are
- * added onto f last and zeroed as they are; the notes' maximum (their 4th
- * lane, -inf where none) then goes to pd_failure.note_atom, or for a law
- * that keeps only the largest note, that one to pd_failure.note_largest. */
+ * force (pd_atom_virial). The far ends' sums (reaction, nall atoms, zero
+ * on entry) are added onto f last and zeroed as they are; the notes'
+ * maximum (their 4th lane, -inf where none) then goes to
+ * pd_failure.note_atom, or for a law that keeps only the largest note,
+ * that one to pd_failure.note_largest. */
 PD_INLINE void
 pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int ntypes,
                  const double *restrict x, const double *restrict vol, double *restrict f,
@@ -443,7 +448,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int directed = kind == PD_MATERIAL_DIRECTED;
-  const int chunked = !directed && !bond_by_bond;
+  const int chunked = !bond_by_bond;
   double *restrict eatom = tallied ? tally->eatom : NULL;
   /* (a local: read through fail, it was loaded again after every
    * reaction store) */
@@ -479,10 +484,10 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       if (chunked &&
           !(type ? pd_force_chunk(b, type, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
                                   strain, ahead, changes, may_break, notes, takes_notes,
-                                  weighted, failing, tallied)
+                                  weighted, failing, tallied, directed)
                  : pd_force_chunk(b, NULL, trow, bd.ti, x, xi, i, row + k0, m, g, fail, mat,
                                   strain, ahead, changes, may_break, notes, takes_notes,
-                                  weighted, failing, tallied))) {
+                                  weighted, failing, tallied, directed))) {
         /* (a copy per case: a test per bond cost the legacy law 9%) */
         if (ends)
           pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 1, 0, NULL);
@@ -524,8 +529,8 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       fsum[c] = pd_sum4_lane(fi[0], c) + pd_sum4_lane(fi[1], c);
       f[3 * i + c] += fsum[c];
     }
-    if (tallied && !directed) pd_atom_virial(&rt, xi, fsum, vi);
     if (tallied) {
+      pd_atom_virial(&rt, xi, fsum, vi, directed);
       tally->energy += pd_lanes_sum(in_lane ? re.owner : re.total);
       for (int c = 0; c < 6; c++) tally->virial[c] += rt.virial[c];
       if (eatom) eatom[i] += pd_lanes_sum(re.owner);
@@ -537,7 +542,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
   pd_tally far_virial = {0.0, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, NULL, tallied ? tally->skip_virial : 1};
   for (int a = 0; a < nall; a++) {
     for (int c = 0; c < 3; c++) f[3 * a + c] += reaction[4 * a + c];
-    if (tallied && !directed) pd_atom_virial(&far_virial, x + 3 * a, reaction + 4 * a, vol[a]);
+    if (tallied) pd_atom_virial(&far_virial, x + 3 * a, reaction + 4 * a, vol[a], directed);
     if (ends) note_atom[a] = reaction[4 * a + 3];
     if (in_lane) {
       far_energy[a % PD_ENERGY_LANES] += reaction[4 * a + 3];
@@ -599,10 +604,13 @@ typedef void (*pd_kernel)(const pd_loop *L, void *mat);
       PD_KERNEL_ROW_(NONE, none, prefix, 0) PD_FAILURE_LAWS(PD_FAILING_ROW_, prefix)};
 #define PD_DEFINE_KERNELS(prefix, strain, force) \
   PD_DEFINE_KERNELS_(prefix, strain, force, force, pd_state_kept, PD_MATERIAL_PLAIN)
-/* The same for a material whose bond force is not along the bond (its
- * force hook fills pd_bond_force.v): the classical correspondence. */
-#define PD_DEFINE_DIRECTED_KERNELS(prefix, strain, force) \
-  PD_DEFINE_KERNELS_(prefix, strain, force, force, pd_state_kept, PD_MATERIAL_DIRECTED)
+/* The same for a material whose first pass takes a force hook of its own
+ * (ahead) and whose rows go bond by bond where changes() says so, of any
+ * kind: pd/corr (classical: PD_MATERIAL_DIRECTED, its force hook fills
+ * pd_bond_force.v), whose first pass leaves the stabilization out (a
+ * stabilized run goes bond by bond, pd_loop.bond_by_bond). */
+#define PD_DEFINE_KERNELS_AHEAD(prefix, strain, force, ahead, changes, kind) \
+  PD_DEFINE_KERNELS_(prefix, strain, force, ahead, changes, kind)
 /* The same for a material whose force hook updates a state of the bond
  * (microplastic's plastic stretch), with its first pass's hooks: the
  * force with the state as it is, and whether the state would change. */
@@ -655,7 +663,15 @@ pd_scatter_sum(double *restrict si, double *restrict sum, int width, const doubl
 {
   const double vj = vol[j];
   double *restrict sj = sum + width * (ptrdiff_t) j;
-  for (int c = 0; c < width; c++) {
+  /* four at a time where the width allows (the correspondence's 9 and 15:
+   * the compiler kept every value scalar), the same arithmetic per value */
+  int c = 0;
+  for (; c + 4 <= width; c += 4) {
+    const pd_sum4 tc = pd_sum4_load(t + c);
+    pd_sum4_store(si + c, pd_sum4_axpy4(pd_sum4_load(si + c), vj, tc));
+    pd_sum4_store(sj + c, pd_sum4_axpy4(pd_sum4_load(sj + c), vi, tc));
+  }
+  for (; c < width; c++) {
     si[c] += t[c] * vj;
     sj[c] += t[c] * vi;
   }
@@ -682,8 +698,10 @@ pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si,
 }
 
 /* Its first pass over bonds row .. row+m-1 of a row, as pd_force_bonds: the
- * values of every bond into tb (width per bond); nonzero if a bond is
- * broken (the caller then takes the chunk bond by bond). */
+ * values of every bond into tb (width per bond) and, unless eb is NULL,
+ * their strains into eb (a value that does not read the strain then costs
+ * none); nonzero if a bond is broken (the caller then takes the chunk
+ * bond by bond). */
 PD_INLINE int
 pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
                      double *restrict tb, void *mat, pd_strain_fn strain,
@@ -698,7 +716,7 @@ pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int
     bd.ti = 0;
     broken |= -(long long) pd_bond_load_ahead(&bd, b, NULL, 0, L->x, xi, row + k, weighted, failing);
     const double eps = strain(mat, &bd);
-    eb[k] = eps;
+    if (eb) eb[k] = eps;
     value(mat, &bd, eps, tb + k * width);
   }
   return broken != 0;
@@ -722,7 +740,7 @@ pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int
   return pd_current_sum_bonds(L, width, xi, i, row, m - m % PD_VECTOR_BONDS, tb, mat, strain,
                               value, eb, weighted, failing) ||
          pd_current_sum_bonds(L, width, xi, i, row + last, PD_VECTOR_BONDS, tb + last * width,
-                              mat, strain, value, eb + last, weighted, failing);
+                              mat, strain, value, eb ? eb + last : NULL, weighted, failing);
 }
 
 /* The same in the current configuration, over the bonds that act (a broken
@@ -755,8 +773,8 @@ pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
     const double xi[3] = {L->x[3 * i], L->x[3 * i + 1], L->x[3 * i + 2]};
     for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
       const int m = n - k0 < PD_CHUNK ? n - k0 : PD_CHUNK;
-      if (!pd_current_sum_chunk(L, width, xi, i, row + k0, m, tb, mat, strain, value, eb,
-                                weighted, failing)) {
+      if (!pd_current_sum_chunk(L, width, xi, i, row + k0, m, tb, mat, strain, value,
+                                keep ? eb : NULL, weighted, failing)) {
         const int *restrict far = b->far + row + k0;
         if (keep)
           for (int k = 0; k < m; k++) keep[row + k0 + k] = eb[k];

@@ -114,17 +114,4 @@ static inline void pd_tally_virial(pd_tally *t, const double d[3], double fpair)
   t->virial[5] += d[1] * d[2] * fpair;
 }
 
-/* Add a bond's virial for a force fv on i (not necessarily along d =
- * x_i - x_j): the symmetric part of d (x) fv. */
-static inline void pd_tally_virial_pair(pd_tally *t, const double d[3], const double fv[3])
-{
-  if (t->skip_virial) return;
-  t->virial[0] += d[0] * fv[0];
-  t->virial[1] += d[1] * fv[1];
-  t->virial[2] += d[2] * fv[2];
-  t->virial[3] += 0.5 * (d[0] * fv[1] + d[1] * fv[0]);
-  t->virial[4] += 0.5 * (d[0] * fv[2] + d[2] * fv[0]);
-  t->virial[5] += 0.5 * (d[1] * fv[2] + d[2] * fv[1]);
-}
-
 #endif

@@ -108,12 +108,14 @@ bond_shape_sums(void *s, const pd_bond *bd, double eps, double *t, int extended,
   pd_sym4_add_dyad(t + 6, n, w);
 }
 
-/* n . S . n for a symmetric S (first six of a per-atom tensor) */
+/* n . S . n for atom a's symmetric S (the first six of its 9 in s; an
+ * int offset, as in classical_force) */
 PD_INLINE double
-normal_component(const double *s, const double n[3])
+normal_component(const double *s, int a, const double n[3])
 {
-  return s[0] * n[0] * n[0] + s[1] * n[1] * n[1] + s[2] * n[2] * n[2] +
-      2.0 * (s[3] * n[0] * n[1] + s[4] * n[0] * n[2] + s[5] * n[1] * n[2]);
+  const int o = 9 * a;
+  return s[o] * n[0] * n[0] + s[o + 1] * n[1] * n[1] + s[o + 2] * n[2] * n[2] +
+      2.0 * (s[o + 3] * n[0] * n[1] + s[o + 4] * n[0] * n[2] + s[o + 5] * n[1] * n[2]);
 }
 
 /* A broken bond in contact (recontact) pushes as a bond-based spring in
@@ -132,39 +134,52 @@ PD_INLINE double
 stabilizing_force(const pd_corr_state *st, const pd_bond *bd, const double *xi)
 {
   if (bd->len <= 0.0) return 0.0;
-  const double *fi = st->defgrad + 9 * bd->i, *fj = st->defgrad + 9 * bd->j;
+  const double *f = st->defgrad, *fi = f + 9 * bd->i;
+  const int j = 9 * bd->j;  /* (an int offset, as in classical_force) */
   double z = 0.0;
   for (int r = 0; r < 3; r++) {
-    const double fxi = 0.5 * ((fi[3 * r] + fj[3 * r]) * xi[0] + (fi[3 * r + 1] + fj[3 * r + 1]) * xi[1] +
-                              (fi[3 * r + 2] + fj[3 * r + 2]) * xi[2]);
+    const double fxi = 0.5 * ((fi[3 * r] + f[j + 3 * r]) * xi[0] + (fi[3 * r + 1] + f[j + 3 * r + 1]) * xi[1] +
+                              (fi[3 * r + 2] + f[j + 3 * r + 2]) * xi[2]);
     z += (bd->d[r] - fxi) * bd->d[r];
   }
   return st->stabilization * st->spring[bd->tij] * z / (bd->len * bd->r0);
 }
 
-/* classical: its strain hook gives the stretch (the order-1/2 form) */
+/* A central part t along the bond, as t Y / |Y|. */
+PD_INLINE void add_central(pd_bond_force *bf, const pd_bond *bd, double t)
+{
+  if (bd->len > 0.0)
+    for (int r = 0; r < 3; r++) bf->v[r] += t * bd->d[r] / bd->len;
+}
+
+/* classical: its strain hook gives the stretch (the order-1/2 form).
+ * 'stabilizing' 0: the stabilization left out, for the first pass (its
+ * gathers of F behind a test kept that pass from vectorizing): with
+ * stabilization every row goes bond by bond (pd_corr_forces). */
 PD_INLINE pd_bond_force
-classical_force(const pd_corr_state *st, const pd_bond *bd, double eps, int damaged)
+classical_force(const pd_corr_state *st, const pd_bond *bd, double eps, int damaged, int stabilizing)
 {
   pd_bond_force bf = {0};
-  double t = 0.0;  /* central part, along the bond */
   if (bd->broken) {
-    t = contact_spring(st, bd, eps, PD_ORDER_HALF);
-  } else if (alive(st, bd, damaged)) {
-    const double *xi = st->xi + 3 * bd->idx;
-    const double *ai = st->tensor + 9 * bd->i, *aj = st->tensor + 9 * bd->j;
-    for (int r = 0; r < 3; r++)
-      bf.v[r] = bd->w * ((ai[3 * r] + aj[3 * r]) * xi[0] + (ai[3 * r + 1] + aj[3 * r + 1]) * xi[1] +
-                         (ai[3 * r + 2] + aj[3 * r + 2]) * xi[2]);
-    if (st->stabilization > 0.0) t = stabilizing_force(st, bd, xi);
+    add_central(&bf, bd, contact_spring(st, bd, eps, PD_ORDER_HALF));
+    return bf;
   }
-  if (t != 0.0 && bd->len > 0.0)
-    for (int r = 0; r < 3; r++) bf.v[r] += t * bd->d[r] / bd->len;
+  if (!alive(st, bd, damaged)) return bf;
+  const double *xi = st->xi + 3 * bd->idx;
+  /* (A_j at an int offset: through a pointer to it, the first pass did
+   * not vectorize) */
+  const double *a = st->tensor, *ai = a + 9 * bd->i;
+  const int j = 9 * bd->j;
+  for (int r = 0; r < 3; r++)
+    bf.v[r] = bd->w * ((ai[3 * r] + a[j + 3 * r]) * xi[0] + (ai[3 * r + 1] + a[j + 3 * r + 1]) * xi[1] +
+                       (ai[3 * r + 2] + a[j + 3 * r + 2]) * xi[2]);
+  if (stabilizing && st->stabilization > 0.0) add_central(&bf, bd, stabilizing_force(st, bd, xi));
   return bf;
 }
 
 PD_INLINE pd_bond_force
-extended_force(const pd_corr_state *st, const pd_bond *bd, double eps, int kind, int damaged)
+extended_force(const pd_corr_state *st, const pd_bond *bd, double eps, int kind, int damaged,
+               int stabilizing)
 {
   pd_bond_force bf = {0};
   if (bd->broken) {
@@ -174,10 +189,10 @@ extended_force(const pd_corr_state *st, const pd_bond *bd, double eps, int kind,
   if (!alive(st, bd, damaged)) return bf;
   const double *xi = st->xi + 3 * bd->idx;
   const double n[3] = {xi[0] / bd->r0, xi[1] / bd->r0, xi[2] / bd->r0};
-  const double si = normal_component(st->tensor + 9 * bd->i, n);
-  const double sj = normal_component(st->tensor + 9 * bd->j, n);
+  const double si = normal_component(st->tensor, bd->i, n);
+  const double sj = normal_component(st->tensor, bd->j, n);
   double t = bd->w * (si + sj) * pd_bond_strain_rate(kind, st->order, eps, bd);
-  if (st->stabilization > 0.0) t += stabilizing_force(st, bd, xi);
+  if (stabilizing && st->stabilization > 0.0) t += stabilizing_force(st, bd, xi);
   bf.tl = pd_per_length(t, bd);
   /* the instantaneous bond energy d psi / d phi at each end ('fail energy') */
   bf.release_i = bd->w * eps * si;
@@ -208,15 +223,27 @@ PD_INLINE double strain_any(void *st, const pd_bond *bd)
 #define CORR_HOOKS(name, DAMAGED)                                                                  \
   PD_INLINE pd_bond_force classical_##name(void *st, const pd_bond *bd, double eps)                \
   {                                                                                                \
-    return classical_force((const pd_corr_state *) st, bd, eps, DAMAGED);                          \
+    return classical_force((const pd_corr_state *) st, bd, eps, DAMAGED, 1);                       \
+  }                                                                                                \
+  PD_INLINE pd_bond_force classical_ahead_##name(void *st, const pd_bond *bd, double eps)          \
+  {                                                                                                \
+    return classical_force((const pd_corr_state *) st, bd, eps, DAMAGED, 0);                       \
   }                                                                                                \
   PD_INLINE pd_bond_force log_##name(void *st, const pd_bond *bd, double eps)                      \
   {                                                                                                \
-    return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_LOG, DAMAGED);             \
+    return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_LOG, DAMAGED, 1);          \
+  }                                                                                                \
+  PD_INLINE pd_bond_force log_ahead_##name(void *st, const pd_bond *bd, double eps)                \
+  {                                                                                                \
+    return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_LOG, DAMAGED, 0);          \
   }                                                                                                \
   PD_INLINE pd_bond_force any_##name(void *st, const pd_bond *bd, double eps)                      \
   {                                                                                                \
-    return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_ANY, DAMAGED);             \
+    return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_ANY, DAMAGED, 1);          \
+  }                                                                                                \
+  PD_INLINE pd_bond_force any_ahead_##name(void *st, const pd_bond *bd, double eps)                \
+  {                                                                                                \
+    return extended_force((const pd_corr_state *) st, bd, eps, PD_ORDER_ANY, DAMAGED, 0);          \
   }                                                                                                \
   PD_INLINE void classical_sums_##name(void *st, const pd_bond *bd, double eps, double *t)     \
   {                                                                                                \
@@ -237,12 +264,15 @@ PD_INLINE double strain_any(void *st, const pd_bond *bd)
 CORR_HOOKS(intact, 0)
 CORR_HOOKS(damaged, 1)
 
-PD_DEFINE_DIRECTED_KERNELS(classical_intact, stretch, classical_intact)
-PD_DEFINE_DIRECTED_KERNELS(classical_damaged, stretch, classical_damaged)
-PD_DEFINE_KERNELS(log_intact, strain_log, log_intact)
-PD_DEFINE_KERNELS(log_damaged, strain_log, log_damaged)
-PD_DEFINE_KERNELS(any_intact, strain_any, any_intact)
-PD_DEFINE_KERNELS(any_damaged, strain_any, any_damaged)
+#define CORR_KERNELS(strain_kind, damage, strain, kind)                                          \
+  PD_DEFINE_KERNELS_AHEAD(strain_kind##_##damage, strain, strain_kind##_##damage,                  \
+                          strain_kind##_ahead_##damage, pd_state_kept, kind)
+CORR_KERNELS(classical, intact, stretch, PD_MATERIAL_DIRECTED)
+CORR_KERNELS(classical, damaged, stretch, PD_MATERIAL_DIRECTED)
+CORR_KERNELS(log, intact, strain_log, PD_MATERIAL_PLAIN)
+CORR_KERNELS(log, damaged, strain_log, PD_MATERIAL_PLAIN)
+CORR_KERNELS(any, intact, strain_any, PD_MATERIAL_PLAIN)
+CORR_KERNELS(any, damaged, strain_any, PD_MATERIAL_PLAIN)
 
 void pd_corr_forces(const pd_loop *L, const pd_corr_state *st)
 {
@@ -251,7 +281,9 @@ void pd_corr_forces(const pd_loop *L, const pd_corr_state *st)
   if (!st->extended) table = damaged ? classical_damaged_kernels : classical_intact_kernels;
   else if (st->order == 0.0) table = damaged ? log_damaged_kernels : log_intact_kernels;
   else table = damaged ? any_damaged_kernels : any_intact_kernels;
-  pd_run_kernel(table, L, (void *) st);
+  pd_loop l = *L;
+  l.bond_by_bond |= st->stabilization > 0.0;  /* (the first pass leaves it out) */
+  pd_run_kernel(table, &l, (void *) st);
 }
 
 #define SUMS(width, strain, value, failing) pd_current_sums(L, st->sum, width, (void *) st, strain, value, failing)

@@ -21,7 +21,8 @@ typedef struct pd_loop {
   double *reaction;
   int nall;                /* owned + ghost atoms */
   int bond_by_bond;        /* every row bond by bond, none in the vectorized pass
-                              (tests compare the two ways' arithmetic) */
+                              (tests compare the two ways' arithmetic; pd/corr's
+                              stabilization, which that pass leaves out) */
 } pd_loop;
 
 #endif

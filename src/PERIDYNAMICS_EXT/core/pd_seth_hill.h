@@ -107,6 +107,8 @@ static inline double pd_seth_hill(double m, double c)
 }
 static inline double pd_seth_hill_slope(double m, double c)
 {
+  /* (pow at m = 0 was 5% of classical correspondence's step) */
+  if (m == 0.0) return 0.5 / c;
   return 0.5 * pow(c, m - 1.0);
 }
 static inline double pd_seth_hill_inverse_excess(double m, double e)
