@@ -3,7 +3,8 @@ the bit.
 
 A row of bonds goes either through the vectorized first pass and the
 scalar scatter, or bond by bond: rows with a broken or breaking bond, and
-every row with the test hook PDEXT_BOND_BY_BOND=1. Both must do the same
+every row with the test hook PDEXT_BOND_BY_BOND=1 (the force loop's and
+the state-based sums' rows: pd/ordinary's dilatation, pd/corr's sums). Both must do the same
 arithmetic in the same order. Each case runs four times from the same
 start: bond by bond with the global energy, the pressure and the per-atom
 energy (compute pe/atom) on every step; the same in two passes (the

@@ -697,16 +697,33 @@ pd_current_sum_bond(const pd_loop *L, double *restrict sum, double *restrict si,
   pd_scatter_sum(si, sum, width, t, bd->j, L->vol, L->vol[bd->i]);
 }
 
+/* A chunk's bonds as a first pass loaded them, one array per number, for
+ * values formed later (pd_current_sums_late). */
+typedef struct pd_chunk_bonds {
+  double d[3][PD_CHUNK], len[PD_CHUNK], len2[PD_CHUNK], r0[PD_CHUNK], w[PD_CHUNK];
+} pd_chunk_bonds;
+
+/* Bond k of such a chunk (of atom i's row, from slot row), as
+ * pd_bond_load_ahead left it. */
+PD_INLINE pd_bond pd_chunk_bond(const pd_chunk_bonds *restrict cb, const int *restrict far, int i,
+                                int row, int k)
+{
+  const pd_bond bd = {.i = i, .j = far[k], .idx = row + k, .ti = 0, .tj = 1, .tij = 1, .broken = 0,
+                      .r0 = cb->r0[k], .w = cb->w[k], .len = cb->len[k], .len2 = cb->len2[k],
+                      .d = {cb->d[0][k], cb->d[1][k], cb->d[2][k]}};
+  return bd;
+}
+
 /* Its first pass over bonds row .. row+m-1 of a row, as pd_force_bonds: the
- * values of every bond into tb (width per bond) and, unless eb is NULL,
- * their strains into eb (a value that does not read the strain then costs
- * none); nonzero if a bond is broken (the caller then takes the chunk
- * bond by bond). */
+ * values of every bond into tb (width per bond), or with cb the bonds'
+ * numbers into cb instead (from index at); unless eb is NULL, their strains into eb (a
+ * value that does not read the strain then costs none); nonzero if a bond
+ * is broken (the caller then takes the chunk bond by bond). */
 PD_INLINE int
 pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
                      double *restrict tb, void *mat, pd_strain_fn strain,
-                     pd_bond_strain_value_fn value, double *restrict eb, int weighted,
-                     int failing)
+                     pd_bond_strain_value_fn value, double *restrict eb, pd_chunk_bonds *restrict cb,
+                     int at, int weighted, int failing)
 {
   const pd_bond_view *restrict b = L->b;
   long long broken = 0;    /* (as pd_force_bonds' 'special') */
@@ -717,7 +734,13 @@ pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int
     broken |= -(long long) pd_bond_load_ahead(&bd, b, NULL, 0, L->x, xi, row + k, weighted, failing);
     const double eps = strain(mat, &bd);
     if (eb) eb[k] = eps;
-    value(mat, &bd, eps, tb + k * width);
+    if (cb) {
+      for (int c = 0; c < 3; c++) cb->d[c][at + k] = bd.d[c];
+      cb->len[at + k] = bd.len, cb->len2[at + k] = bd.len2, cb->r0[at + k] = bd.r0;
+      cb->w[at + k] = bd.w;
+    } else {
+      value(mat, &bd, eps, tb + k * width);
+    }
   }
   return broken != 0;
 }
@@ -730,17 +753,18 @@ pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int
 PD_INLINE int
 pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int row, int m,
                      double *restrict tb, void *mat, pd_strain_fn strain,
-                     pd_bond_strain_value_fn value, double *restrict eb, int weighted,
-                     int failing)
+                     pd_bond_strain_value_fn value, double *restrict eb, pd_chunk_bonds *restrict cb,
+                     int weighted, int failing)
 {
   const int last = pd_vector_overlap(m);
   if (last < 0)
-    return pd_current_sum_bonds(L, width, xi, i, row, m, tb, mat, strain, value, eb, weighted,
-                                failing);
+    return pd_current_sum_bonds(L, width, xi, i, row, m, tb, mat, strain, value, eb, cb, 0,
+                                weighted, failing);
   return pd_current_sum_bonds(L, width, xi, i, row, m - m % PD_VECTOR_BONDS, tb, mat, strain,
-                              value, eb, weighted, failing) ||
-         pd_current_sum_bonds(L, width, xi, i, row + last, PD_VECTOR_BONDS, tb + last * width,
-                              mat, strain, value, eb ? eb + last : NULL, weighted, failing);
+                              value, eb, cb, 0, weighted, failing) ||
+         pd_current_sum_bonds(L, width, xi, i, row + last, PD_VECTOR_BONDS,
+                              cb ? NULL : tb + last * width, mat, strain, value,
+                              eb ? eb + last : NULL, cb, last, weighted, failing);
 }
 
 /* The same in the current configuration, over the bonds that act (a broken
@@ -756,12 +780,13 @@ pd_current_sum_chunk(const pd_loop *L, int width, const double xi[3], int i, int
 PD_INLINE void
 pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
                    pd_strain_fn strain, pd_bond_strain_value_fn value, double *restrict keep,
-                   int weighted, int failing)
+                   int weighted, int failing, int late)
 {
   const pd_bond_view *restrict b = L->b;
   const double *restrict vol = L->vol;
   pd_bond bd;
   double tb[PD_CHUNK * PD_MAX_SUM_WIDTH], eb[PD_CHUNK];
+  pd_chunk_bonds cb;
   for (int i = 0; i < b->nowner; i++) {
     const int row = i * b->stride, n = b->count[i];
     const double vi = vol[i];
@@ -773,11 +798,22 @@ pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
     const double xi[3] = {L->x[3 * i], L->x[3 * i + 1], L->x[3 * i + 2]};
     for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
       const int m = n - k0 < PD_CHUNK ? n - k0 : PD_CHUNK;
-      if (!pd_current_sum_chunk(L, width, xi, i, row + k0, m, tb, mat, strain, value,
-                                keep ? eb : NULL, weighted, failing)) {
+      if (!L->bond_by_bond &&
+          !pd_current_sum_chunk(L, width, xi, i, row + k0, m, tb, mat, strain, value,
+                                keep || late ? eb : NULL, late ? &cb : NULL, weighted, failing)) {
         const int *restrict far = b->far + row + k0;
         if (keep)
           for (int k = 0; k < m; k++) keep[row + k0 + k] = eb[k];
+        if (late) {
+          for (int k = 0; k < m; k++) {
+            double t[PD_MAX_SUM_WIDTH];
+            for (int c = 0; c < width; c++) t[c] = 0.0;  /* (as pd_current_sum_bond) */
+            const pd_bond bk = pd_chunk_bond(&cb, far, i, row + k0, k);
+            value(mat, &bk, eb[k], t);
+            pd_scatter_sum(k & 1 ? odd : even, sum, width, t, far[k], vol, vi);
+          }
+          continue;
+        }
         int k = 0;
         for (; k + 1 < m; k += 2) {
           pd_scatter_sum(even, sum, width, tb + k * width, far[k], vol, vi);
@@ -796,26 +832,48 @@ pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
 
 /* (one copy per weight mode, so that it is a constant in each) */
 PD_INLINE void
+pd_current_sums_mode(const pd_loop *L, double *restrict sum, int width, void *mat,
+                     pd_strain_fn strain, pd_bond_strain_value_fn value, double *restrict keep,
+                     int failing, int late)
+{
+  switch (pd_weight_mode(L->b)) {
+  case PD_WEIGHT_INVERSE:
+    pd_current_sums_on(L, sum, width, mat, strain, value, keep, PD_WEIGHT_INVERSE, failing, late);
+    break;
+  case PD_WEIGHT_TABLE:
+    pd_current_sums_on(L, sum, width, mat, strain, value, keep, PD_WEIGHT_TABLE, failing, late);
+    break;
+  default:
+    pd_current_sums_on(L, sum, width, mat, strain, value, keep, PD_WEIGHT_ONE, failing, late);
+    break;
+  }
+}
+
+PD_INLINE void
 pd_current_sums_keep(const pd_loop *L, double *restrict sum, int width, void *mat,
                      pd_strain_fn strain, pd_bond_strain_value_fn value, double *restrict keep,
                      int failing)
 {
-  switch (pd_weight_mode(L->b)) {
-  case PD_WEIGHT_INVERSE:
-    pd_current_sums_on(L, sum, width, mat, strain, value, keep, PD_WEIGHT_INVERSE, failing);
-    break;
-  case PD_WEIGHT_TABLE:
-    pd_current_sums_on(L, sum, width, mat, strain, value, keep, PD_WEIGHT_TABLE, failing);
-    break;
-  default: pd_current_sums_on(L, sum, width, mat, strain, value, keep, PD_WEIGHT_ONE, failing); break;
-  }
+  pd_current_sums_mode(L, sum, width, mat, strain, value, keep, failing, 0);
 }
 
 PD_INLINE void
 pd_current_sums(const pd_loop *L, double *restrict sum, int width, void *mat, pd_strain_fn strain,
                 pd_bond_strain_value_fn value, int failing)
 {
-  pd_current_sums_keep(L, sum, width, mat, strain, value, NULL, failing);
+  pd_current_sums_mode(L, sum, width, mat, strain, value, NULL, failing, 0);
+}
+
+/* The same for wide values that read the strain (pd/corr's extended
+ * sums, 15 per bond): the first pass keeps each bond's numbers and strain
+ * (in vectors: stores of 15 values per bond kept it scalar, and with it
+ * the strain's log), and the scalar pass forms each bond's values just
+ * before it adds them. The same numbers as pd_current_sums. */
+PD_INLINE void
+pd_current_sums_late(const pd_loop *L, double *restrict sum, int width, void *mat,
+                     pd_strain_fn strain, pd_bond_strain_value_fn value, int failing)
+{
+  pd_current_sums_mode(L, sum, width, mat, strain, value, NULL, failing, 1);
 }
 
 #endif

@@ -208,12 +208,13 @@ PD_INLINE double stretch(void *st, const pd_bond *bd)
   (void) st;
   return (bd->len - bd->r0) / bd->r0;
 }
-/* (a kernel that needs no bond energy drops the strain's log: only the
- * energies and the failure laws read it) */
+/* (the package's own log, as pd/ordinary's m = 0: with libm's the sums'
+ * first pass stays scalar; a kernel that needs no bond energy drops it:
+ * only the energies and the failure laws read it) */
 PD_INLINE double strain_log(void *st, const pd_bond *bd)
 {
   (void) st;
-  return pd_bond_log_strain(bd);
+  return pd_bond_strain(PD_ORDER_LOG, 0.0, bd);
 }
 PD_INLINE double strain_any(void *st, const pd_bond *bd)
 {
@@ -287,6 +288,8 @@ void pd_corr_forces(const pd_loop *L, const pd_corr_state *st)
 }
 
 #define SUMS(width, strain, value, failing) pd_current_sums(L, st->sum, width, (void *) st, strain, value, failing)
+#define SUMS_LATE(width, strain, value, failing) \
+  pd_current_sums_late(L, st->sum, width, (void *) st, strain, value, failing)
 
 void pd_corr_sums(const pd_loop *L, const pd_corr_state *st)
 {
@@ -297,14 +300,14 @@ void pd_corr_sums(const pd_loop *L, const pd_corr_state *st)
   case 1: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_intact, 1); break;
   case 2: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_damaged, 0); break;
   case 3: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_damaged, 1); break;
-  case 4: SUMS(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_intact, 0); break;
-  case 5: SUMS(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_intact, 1); break;
-  case 6: SUMS(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_damaged, 0); break;
-  case 7: SUMS(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_damaged, 1); break;
-  case 8: SUMS(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_intact, 0); break;
-  case 9: SUMS(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_intact, 1); break;
-  case 10: SUMS(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_damaged, 0); break;
-  default: SUMS(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_damaged, 1); break;
+  case 4: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_intact, 0); break;
+  case 5: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_intact, 1); break;
+  case 6: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_damaged, 0); break;
+  case 7: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_damaged, 1); break;
+  case 8: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_intact, 0); break;
+  case 9: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_intact, 1); break;
+  case 10: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_damaged, 0); break;
+  default: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_damaged, 1); break;
   }
 }
 

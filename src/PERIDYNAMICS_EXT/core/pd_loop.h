@@ -20,9 +20,10 @@ typedef struct pd_loop {
    * computed */
   double *reaction;
   int nall;                /* owned + ghost atoms */
-  int bond_by_bond;        /* every row bond by bond, none in the vectorized pass
-                              (tests compare the two ways' arithmetic; pd/corr's
-                              stabilization, which that pass leaves out) */
+  int bond_by_bond;        /* every row bond by bond, none in the vectorized pass,
+                              in the force loop and the sums (tests compare the two
+                              ways' arithmetic; pd/corr's stabilization, which the
+                              force loop's pass leaves out) */
 } pd_loop;
 
 #endif
