@@ -22,7 +22,7 @@ double pmb_eval(const lattice *l, double c, const double *x, double *f, double *
   pd_pmb mat = {&c};
   pd_tally t = {0};
   t.eatom = psi;
-  pd_pmb_forces(&(pd_loop){&v, l->type, 1, x, l->vol, f, &t, NULL, l->reaction, l->natoms, 0}, &mat);
+  pd_pmb_forces(&(pd_loop){&v, l->type, 1, x, l->vol, f, &t, NULL, l->reaction, l->natoms, 0, NULL, 0}, &mat);
   const double e = total(l, psi);
   if (psi_out) memcpy(psi_out, psi, sizeof(double) * l->natoms);
   free(psi);
@@ -69,7 +69,7 @@ static double ordinary_run(const lattice *l, double lambda, double mu, double or
   if (fail && crit) fail->params = &energy;
   pd_tally t = {0};
   t.eatom = psi;
-  const pd_loop L = {&v, l->type, 1, x, l->vol, f, &t, fail, l->reaction, l->natoms, 0};
+  const pd_loop L = {&v, l->type, 1, x, l->vol, f, &t, fail, l->reaction, l->natoms, 0, NULL, 0};
   pd_ordinary_dilatation(&L, &st);
   for (int i = 0; i < n; i++) {
     const pd_ordinary_atom_out o = pd_ordinary_atom(lambda, mu, dim / m[i], sum[i]);

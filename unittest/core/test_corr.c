@@ -306,7 +306,7 @@ static double corr_run(const body *b, const corr_case *cc, const double *x, doub
   st.extended = cc->extended, st.dim = cc->dim, st.order = cc->order;
   st.xi = xi, st.sum = ssum, st.tensor = tensor, st.defgrad = defgrad;
   st.stabilization = cc->stabilization, st.spring = &cc->spring, st.damage_max = 0.99;
-  const pd_loop L = {&v, l->type, 1, x, l->vol, f, NULL, NULL, l->reaction, l->natoms, 0};
+  const pd_loop L = {&v, l->type, 1, x, l->vol, f, NULL, NULL, l->reaction, l->natoms, 0, NULL, 0};
   pd_corr_shape_sums(&L, &st);
   for (int g = b->nown; g < n; g++)
     for (int c = 0; c < swidth; c++) ssum[b->owner[g] * swidth + c] += ssum[g * swidth + c];

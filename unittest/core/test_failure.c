@@ -201,10 +201,10 @@ int main(void)
     double x[6] = {0, 0, 0, h * 1.009, 0, 0}, f[6] = {0};
     pd_law_stretch stretch = {&s0, 0};
     pd_failure fail = {.law = PD_FAIL_STRETCH, .params = &stretch, .recontact = 1, .len0 = l.len0};
-    pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, &fail, l.reaction, l.natoms, 0}, &mat);
+    pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, &fail, l.reaction, l.natoms, 0, NULL, 0}, &mat);
     check_true("PMB: below s0 nothing breaks", fail.nbroken == 0 && l.len0[0] > 0.0);
     x[3] = h * 1.011;
-    pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, &fail, l.reaction, l.natoms, 0}, &mat);
+    pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, &fail, l.reaction, l.natoms, 0, NULL, 0}, &mat);
     check_true("PMB: above s0 the bond breaks", fail.nbroken == 1 && l.len0[0] < 0.0);
     const double sb = 0.011;
     check_rel("PMB: released energy 1/2 c s^2 |xi| V_i V_j", fail.released_joule,
@@ -217,7 +217,7 @@ int main(void)
       f[0] = 0.0;
       stretch.after = after;
       pd_failure fa = {.law = PD_FAIL_STRETCH, .params = &stretch, .recontact = 1, .len0 = l.len0};
-      pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, &fa, l.reaction, l.natoms, 0}, &mat);
+      pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, &fa, l.reaction, l.natoms, 0, NULL, 0}, &mat);
       check_true(after ? "PMB, after: above s0 the bond breaks" : "PMB, now: above s0 the bond breaks",
                  fa.nbroken == 1 && l.len0[0] < 0.0);
       fx[after] = f[0];

@@ -19,7 +19,7 @@ static inline double linear_strain(void *mat, const pd_bond *bd)
 static inline pd_bond_force linear_force(void *mat, const pd_bond *bd, double s)
 {
   (void) mat;
-  const pd_bond_force bf = {.tl = s * bd->w / bd->len, .stored_i = s * s, .stored_j = s * s};
+  const pd_bond_force bf = {.tl = s * bd->w / bd->len, .stored = s * s};
   return bf;
 }
 
@@ -45,7 +45,7 @@ static long evaluate(scene *sc, pd_fail_law law, pd_failure *fail)
   fail->params = law == PD_FAIL_LEGACY ? &params : NULL;
   fail->len0 = sc->len0;
   fail->note_atom = law == PD_FAIL_LEGACY ? sc->note : NULL;
-  const pd_loop L = {&v, NULL, 2, sc->x, l->vol, sc->f, NULL, fail, l->reaction, l->natoms, 0};
+  const pd_loop L = {&v, NULL, 2, sc->x, l->vol, sc->f, NULL, fail, l->reaction, l->natoms, 0, NULL, 0};
   pd_run_kernel(linear_kernels, &L, NULL);
   return fail->nbroken;
 }

@@ -54,7 +54,7 @@ static int evaluate(const pd_kernel (*table)[6], const lattice *l, const double 
   pd_bond_view v = lattice_view(l);
   memset(f, 0, sizeof(double) * 3 * l->natoms);
   memset(calls, 0, sizeof(int) * (size_t) l->natoms * l->stride);
-  const pd_loop L = {&v, l->type, 1, x, l->vol, f, NULL, NULL, l->reaction, l->natoms, 0};
+  const pd_loop L = {&v, l->type, 1, x, l->vol, f, NULL, NULL, l->reaction, l->natoms, 0, NULL, 0};
   pd_run_kernel(table, &L, calls);
   int most = 0, missed = 0;
   *repeated = 0;

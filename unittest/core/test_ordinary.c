@@ -247,7 +247,7 @@ int main(void)
         pd_bond_view v = lattice_view(&l);
         v.weight_horizon = horizons[w];
         pd_ordinary_state st = {0.5, sum[w], ab, NULL, 0};
-        const pd_loop L = {&v, l.type, 1, x, l.vol, f[w], per_atom ? &t : NULL, NULL, l.reaction, n, 0};
+        const pd_loop L = {&v, l.type, 1, x, l.vol, f[w], per_atom ? &t : NULL, NULL, l.reaction, n, 0, NULL, 0};
         pd_ordinary_dilatation(&L, &st);
         for (int a = 0; a < n; a++) {
           ab[2 * a] = 1e22 * sum[w][a];
@@ -295,7 +295,7 @@ int main(void)
         if (l.count[a]) l.len0[a * l.stride + l.count[a] - 1] *= -1.0;
       pd_failure fail = {.law = PD_FAIL_STRETCH, .recontact = 0, .len0 = l.len0};
       pd_ordinary_state st = {0.5, sum[broken], NULL, NULL, 0};
-      const pd_loop L = {&v, l.type, 1, x, l.vol, NULL, NULL, broken ? &fail : NULL, l.reaction, n, 0};
+      const pd_loop L = {&v, l.type, 1, x, l.vol, NULL, NULL, broken ? &fail : NULL, l.reaction, n, 0, NULL, 0};
       pd_ordinary_dilatation(&L, &st);
       for (int a = 0; broken && a < n; a++)
         if (l.count[a]) l.len0[a * l.stride + l.count[a] - 1] *= -1.0;
@@ -334,7 +334,7 @@ int main(void)
           memset(sum, 0, sizeof(double) * n);
           pd_ordinary_state st = {0.5, sum, ab, NULL, uniform};
           const pd_loop L = {&v, l.type, 1, x, l.vol, f[varying][per_atom][uniform],
-                             per_atom ? &t : NULL, NULL, l.reaction, n, 0};
+                             per_atom ? &t : NULL, NULL, l.reaction, n, 0, NULL, 0};
           pd_ordinary_dilatation(&L, &st);
           for (int a = 0; a < n; a++) {
             ab[2 * a] = 1e22 * sum[a];

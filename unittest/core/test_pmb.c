@@ -98,7 +98,7 @@ int main(void)
     for (int k = 0; k < 5; k++) {
       x[3] = h * (1.0 + stretches[k]);
       for (int q = 0; q < 6; q++) f[q] = 0.0;
-      pd_microplastic_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, NULL, l.reaction, l.natoms, 0}, &mat, &mp);
+      pd_microplastic_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f, NULL, NULL, l.reaction, l.natoms, 0, NULL, 0}, &mat, &mp);
       force[k] = f[0];
     }
     check_rel("microplastic: force at yield is c sy", force[0], c * sy, 1e-9);
@@ -111,8 +111,8 @@ int main(void)
     double plastic2 = 0.0, g[6] = {0}, f2[6] = {0};
     pd_microplastic mp2 = {.sy = &big, .plastic = &plastic2};
     x[3] = h * 1.01;
-    pd_microplastic_forces(&(pd_loop){&v, l.type, 1, x, l.vol, g, NULL, NULL, l.reaction, l.natoms, 0}, &mat, &mp2);
-    pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f2, NULL, NULL, l.reaction, l.natoms, 0}, &mat);
+    pd_microplastic_forces(&(pd_loop){&v, l.type, 1, x, l.vol, g, NULL, NULL, l.reaction, l.natoms, 0, NULL, 0}, &mat, &mp2);
+    pd_pmb_forces(&(pd_loop){&v, l.type, 1, x, l.vol, f2, NULL, NULL, l.reaction, l.natoms, 0, NULL, 0}, &mat);
     check_true("microplastic with an unreachable yield stretch is PMB exactly", g[0] == f2[0] && g[3] == f2[3]);
     l.natoms = 8;
     lattice_free(&l);

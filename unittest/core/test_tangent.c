@@ -266,7 +266,7 @@ static double estimate(const lattice *l, const model *m, const double *x, double
   const int n = l->natoms, dim = dimension(l);
   double *sum = calloc(n, sizeof(double));
   const pd_bond_view v = lattice_view(l);
-  const pd_loop L = {&v, l->type, 1, x, l->vol, NULL, NULL, NULL, NULL, 0, 0};
+  const pd_loop L = {&v, l->type, 1, x, l->vol, NULL, NULL, NULL, NULL, 0, 0, NULL, 0};
   if (m->ordinary) {
     /* k_i = N_i (2 mu_bar + d |lambda_bar|), N_i = d / m_i (as
      * PairPDOrdinary::stable_dt_sum); A, B of the current state */
@@ -344,7 +344,7 @@ static void closing_rates(void)
   unsigned seed = 11;
   for (int k = 0; k < 3 * n; k++) v[k] = urand(&seed);
   const pd_bond_view b = lattice_view(&l);
-  const pd_loop L = {&b, l.type, 1, x, l.vol, NULL, NULL, NULL, NULL, 0, 0};
+  const pd_loop L = {&b, l.type, 1, x, l.vol, NULL, NULL, NULL, NULL, 0, 0, NULL, 0};
   const double c = 1.0;
   const pd_pmb_tangent t = {&c, NULL};
   pd_pmb_tangent_sums(&L, v, &t, sum, closing);

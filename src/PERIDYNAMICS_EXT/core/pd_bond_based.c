@@ -38,8 +38,7 @@ PD_INLINE pd_bond_force pmb_bond(double c, double sl, double ext, const pd_bond 
 {
   const double tl = c * sl * bd->w;
   const double e = 0.25 * (tl * bd->len) * ext;
-  const pd_bond_force bf = {.tl = tl, .stored_i = e, .stored_j = e,
-                            .release_i = e, .release_j = e, .release = e + e};
+  const pd_bond_force bf = {.tl = tl, .stored = e, .release_i = e, .release_j = e, .release = e + e};
   return bf;
 }
 

@@ -115,20 +115,27 @@ PD_INLINE int pd_row_begin(pd_bond *bd, const int *restrict type, int ntypes, in
   return bd->ti * ntypes;
 }
 
-/* The energies a tallied step sums: each intact bond stores ei (per
- * partner volume) at its owner i and ej at its far end j. The owner's
- * share of a row, ei vj, goes onto lane k % PD_ENERGY_LANES of the row's
- * sum (one chain of adds waited on the previous bond's add: 4 cycles a
- * bond), summed as (0 + 1) + (2 + 3) at the row's end. The far end's,
- * ej vi, rides in the 4th lane of j's reaction sum when the law keeps no
- * notes there (pd_energy_in_lane; the total is then the rows' sums plus
- * every atom's lane, added after the loop), else it goes onto eatom[j]
- * and, with ei vj, onto a lane of the row's total. */
+/* The energies a tallied step sums: each intact bond stores e s_i (per
+ * partner volume) at its owner i and e s_j at its far end j, e =
+ * pd_bond_force.stored and s the ends' factors (pd_loop.energy_scale).
+ * When the law keeps no notes in the sums' 4th lane (pd_energy_in_lane),
+ * e rides there, negated: the owner's sum gathers -e V_j (taken times
+ * -s_i at the row's end), j's reaction e V_i (times s_j after the loop),
+ * in the same 4-wide adds as the force. Else the bond's ei = e s_i and
+ * ej = e s_j go onto lane k % PD_ENERGY_LANES of the row's sums (one
+ * chain of adds waited on the previous bond's add: 4 cycles a bond),
+ * summed as (0 + 1) + (2 + 3) at the row's end, and ej onto eatom[j]. */
 enum { PD_ENERGY_LANES = 4 };
 typedef struct pd_row_energy {
   double total[PD_ENERGY_LANES];    /* (only when not in the lane) */
   double owner[PD_ENERGY_LANES];
 } pd_row_energy;
+
+/* Atom a's factor of its bonds' stored energies (1 without a table). */
+PD_INLINE double pd_energy_scale(const double *restrict scale, int stride, int a)
+{
+  return scale ? scale[stride * (ptrdiff_t) a] : 1.0;
+}
 
 PD_INLINE int pd_energy_in_lane(int tallied, int failing, int takes_notes)
 {
@@ -191,7 +198,8 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
               pd_strain_fn strain,
               pd_force_fn force, pd_breaks_now_fn breaks_now, pd_breaks_after_fn breaks_after,
               pd_law_notes_fn notes, double *row_note, int noting, int ends, int weighted,
-              int tallied, int in_lane, int failing, int directed)
+              int tallied, int in_lane, int failing, int directed, const double *restrict escale,
+              int estride)
 {
   pd_bond_load(bd, b, type, trow, x, xi, fail, idx, weighted, failing, 1);
   const double eps = strain(mat, bd);
@@ -214,17 +222,17 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   const double tl = directed ? 0.0 : share * bf.tl;
   for (int c = 0; c < 3; c++) fij[c] = directed ? share * bf.v[c] : tl * bd->d[c];
   /* a breaking bond's energy is booked as dissipated instead */
-  const double ei = share == 1.0 ? bf.stored_i : 0.0, ej = share == 1.0 ? bf.stored_j : 0.0;
-  *fi = pd_sum4_axpy(*fi, vj, fij[0], fij[1], fij[2]);
+  const double e = share == 1.0 ? bf.stored : 0.0;
+  /* the force and, in the lane, the energy, negated (pd_row_energy) */
+  const pd_sum4 a = pd_sum4_make(fij[0], fij[1], fij[2], in_lane ? -e : 0.0);
+  *fi = pd_sum4_axpy4(*fi, vj, a);
   double *restrict rj = reaction + 4 * (ptrdiff_t) j;
-  pd_sum4_store(rj, pd_sum4_axpy4(pd_sum4_load(rj), -vi,
-                                  pd_sum4_make(fij[0], fij[1], fij[2], in_lane ? -ej : 0.0)));
-  if (tallied) {
-    if (in_lane) re->owner[lane] += ei * vj;
-    else pd_tally_energy(&re->total[lane], &re->owner[lane], tally->eatom, j, vi, vj, ei, ej);
-    /* (the loop takes the virial from the atoms' summed forces,
-     * pd_atom_virial) */
-  }
+  pd_sum4_store(rj, pd_sum4_axpy4(pd_sum4_load(rj), -vi, a));
+  /* (the loop takes the virial from the atoms' summed forces,
+   * pd_atom_virial) */
+  if (tallied && !in_lane)
+    pd_tally_energy(&re->total[lane], &re->owner[lane], tally->eatom, j, vi, vj,
+                    e * pd_energy_scale(escale, estride, i), e * pd_energy_scale(escale, estride, j));
   if (failing && !bd->broken) {
     if (noting) {
       const double value = notes(fail, bd);
@@ -278,9 +286,9 @@ pd_bond_load_ahead(pd_bond *bd, const pd_bond_view *restrict b, const int *restr
 /* The first pass over bonds row .. row+m-1 (of one row): every intact bond's
  * force on i per V_i V_j into g (component c of bond k at c * PD_CHUNK + k)
  * and, for the failure law's note, what it notes (at 3 * PD_CHUNK + k);
- * when 'tallied', the energies it stores at both ends (at 5 and 6 *
- * PD_CHUNK + k; the far end's negated at 3 * PD_CHUNK + k instead when it
- * rides in the lane, pd_energy_in_lane). No
+ * when 'tallied', the energy it stores (pd_bond_force.stored: at 5 *
+ * PD_CHUNK + k, or negated at 3 * PD_CHUNK + k when it rides in the lane,
+ * pd_energy_in_lane). No
  * store that another bond could read, so the compiler vectorizes it (the
  * far ends' positions gathered). Returns nonzero if a bond is broken or
  * might break now or after (the law's screen, _ahead): the caller then
@@ -313,9 +321,8 @@ pd_force_bonds(const pd_bond_view *restrict b, const int *restrict type, int tro
     }
     for (int c = 0; c < 3; c++) g[c * PD_CHUNK + k] = directed ? bf.v[c] : bf.tl * bd.d[c];
     if (tallied) {
-      g[5 * PD_CHUNK + k] = bf.stored_i;
-      if (pd_energy_in_lane(tallied, failing, takes_notes)) g[3 * PD_CHUNK + k] = -bf.stored_j;
-      else g[6 * PD_CHUNK + k] = bf.stored_j;
+      if (pd_energy_in_lane(tallied, failing, takes_notes)) g[3 * PD_CHUNK + k] = -bf.stored;
+      else g[5 * PD_CHUNK + k] = bf.stored;
     }
   }
   return special != 0;
@@ -348,7 +355,7 @@ pd_force_chunk(const pd_bond_view *restrict b, const int *restrict type, int tro
 
 /* The first pass's numbers of bond k as one vector: its force (lanes 0-2)
  * and, when 'lane3', what it keeps at 3 * PD_CHUNK + k (its note, or its
- * far end's energy negated; else 0). */
+ * energy negated; else 0). */
 PD_INLINE pd_sum4 pd_chunk_record(const double *restrict g, int k, int lane3)
 {
   return pd_sum4_make(g[k], g[PD_CHUNK + k], g[2 * PD_CHUNK + k],
@@ -377,23 +384,19 @@ pd_scatter_bond(pd_sum4 sum_i, pd_sum4 a, int j, const double *restrict vol, dou
     pd_sum4_store(rj, pd_sum4_axpy_note(pd_sum4_load(rj), -vi, a));
   else
     pd_sum4_store(rj, pd_sum4_axpy4(pd_sum4_load(rj), -vi, a));
-  /* (lane 3 then sums notes or energies times volumes: never read) */
+  /* (lane 3 then sums notes, never read, or the energies, pd_row_energy) */
   return pd_sum4_axpy4(sum_i, vol[j], a);
 }
 
 /* A chunk's second pass: pd_scatter_bond for its m bonds, the even ones
  * onto fi[0] and the odd ones onto fi[1], their notes onto the far ends
- * when 'ends' (their maximum), their far ends' energies (lane 3) when
- * 'energies' (added; with the owner's onto the lanes of 'owner');
- * when 'noting', the largest note onto row_note. */
+ * when 'ends' (their maximum), their energies (lane 3) when 'energies'
+ * (added, pd_row_energy); when 'noting', the largest note onto row_note. */
 PD_INLINE void
 pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict g,
                  const double *restrict vol, double vi, double *restrict reaction,
-                 double *row_note, int m, int noting, int ends, int energies, double *owner)
+                 double *row_note, int m, int noting, int ends, int energies)
 {
-  const double *restrict ei = g + 5 * PD_CHUNK;
-  double own[PD_ENERGY_LANES];
-  for (int l = 0; energies && l < PD_ENERGY_LANES; l++) own[l] = owner[l];
   const double *restrict note = g + 3 * PD_CHUNK;
   /* (fi's halves as locals: their memory would be loaded and stored again
    * for every bond; the notes' largest four at a time, lane l that of
@@ -405,20 +408,16 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
     pd_sum4 a[4];
     pd_chunk_records4(g, k, ends || energies, a);
     if (noting) rn = pd_sum4_max(pd_sum4_load(note + k), rn);
-    for (int c = 0; c < 4; c++) {
+    for (int c = 0; c < 4; c++)
       sum[c & 1] = pd_scatter_bond(sum[c & 1], a[c], far[k + c], vol, vi, reaction, ends);
-      if (energies) own[c] += ei[k + c] * vol[far[k + c]];
-    }
   }
   for (; k < m; k++) {
     sum[k & 1] = pd_scatter_bond(sum[k & 1], pd_chunk_record(g, k, ends || energies), far[k], vol,
                                  vi, reaction, ends);
-    if (energies) own[k % PD_ENERGY_LANES] += ei[k] * vol[far[k]];
     if (noting) pd_note_max(row_note, note[k]);
   }
   fi[0] = sum[0];
   fi[1] = sum[1];
-  for (int l = 0; energies && l < PD_ENERGY_LANES; l++) owner[l] = own[l];
   for (int c = 0; noting && c < 4; c++) pd_note_max(row_note, pd_sum4_lane(rn, c));
 }
 
@@ -444,7 +443,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                  pd_state_changes_fn changes, pd_breaks_now_fn breaks_now,
                  pd_breaks_after_fn breaks_after, pd_may_break_fn may_break,
                  pd_law_notes_fn notes, int takes_notes, int weighted, int tallied, int failing,
-                 int kind, int bond_by_bond)
+                 int kind, int bond_by_bond, const double *restrict escale, int estride)
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int directed = kind == PD_MATERIAL_DIRECTED;
@@ -462,12 +461,12 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
   if (ends)
     for (int a = 0; a < nall; a++) reaction[4 * (ptrdiff_t) a + 3] = -INFINITY;
   pd_bond bd;
-  double g[7 * PD_CHUNK];
+  double g[6 * PD_CHUNK];
   for (int i = 0; i < b->nowner; i++) {
     const int n = b->count[i];
     if (!n) continue;
     const int row = i * b->stride;
-    const double vi = vol[i];
+    const double vi = vol[i], si = tallied ? pd_energy_scale(escale, estride, i) : 0.0;
     /* the sum on i in two halves, bonds 0, 2, 4 .. of the row and 1, 3, ..:
      * two chains of adds instead of one (the scalar pass waited on it) */
     pd_sum4 fi[2];
@@ -490,14 +489,13 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
                                   weighted, failing, tallied, directed))) {
         /* (a copy per case: a test per bond cost the legacy law 9%) */
         if (ends)
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 1, 0, NULL);
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 1, 0);
         else if (noting)
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 0, 0, NULL);
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 1, 0, 0);
         else if (in_lane)
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0, 0, 1,
-                           re.owner);
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0, 0, 1);
         else
-          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0, 0, 0, NULL);
+          pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0, 0, 0);
         const int *restrict far = b->far + row + k0;
         /* as pd_force_bond tallies an intact bond, bond after bond (its
          * arithmetic written again here: through shared helpers this
@@ -506,14 +504,16 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
          * bond-by-bond path takes their address) */
         if (tallied && !in_lane) {
           pd_row_energy r = re;
+          const double *restrict e = g + 5 * PD_CHUNK;
           int k = 0;
           for (; k + PD_ENERGY_LANES <= m; k += PD_ENERGY_LANES)
             for (int l = 0; l < PD_ENERGY_LANES; l++)
               pd_tally_energy(&r.total[l], &r.owner[l], eatom, far[k + l], vi, vol[far[k + l]],
-                              g[5 * PD_CHUNK + k + l], g[6 * PD_CHUNK + k + l]);
+                              e[k + l] * si, e[k + l] * pd_energy_scale(escale, estride, far[k + l]));
           for (; k < m; k++)
             pd_tally_energy(&r.total[k % PD_ENERGY_LANES], &r.owner[k % PD_ENERGY_LANES], eatom,
-                            far[k], vi, vol[far[k]], g[5 * PD_CHUNK + k], g[6 * PD_CHUNK + k]);
+                            far[k], vi, vol[far[k]], e[k] * si,
+                            e[k] * pd_energy_scale(escale, estride, far[k]));
           re = r;
         }
         continue;
@@ -522,7 +522,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
         pd_force_bond(b, type, trow, x, xi, vol, reaction, &fi[k & 1], &bd, row + k0 + k,
                       &sums, &rt, &re, k % PD_ENERGY_LANES, fail, mat, strain, force, breaks_now,
                       breaks_after, notes, &row_note, noting, ends, weighted, tallied, in_lane,
-                      failing, directed);
+                      failing, directed, escale, estride);
     }
     double fsum[3];
     for (int c = 0; c < 3; c++) {
@@ -531,9 +531,11 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
     }
     if (tallied) {
       pd_atom_virial(&rt, xi, fsum, vi, directed);
-      tally->energy += pd_lanes_sum(in_lane ? re.owner : re.total);
+      const double own = in_lane ? -si * (pd_sum4_lane(fi[0], 3) + pd_sum4_lane(fi[1], 3))
+                                 : pd_lanes_sum(re.owner);
+      tally->energy += in_lane ? own : pd_lanes_sum(re.total);
       for (int c = 0; c < 6; c++) tally->virial[c] += rt.virial[c];
-      if (eatom) eatom[i] += pd_lanes_sum(re.owner);
+      if (eatom) eatom[i] += own;
     }
     if (ends) pd_note_max(reaction + 4 * (ptrdiff_t) i + 3, row_note);
     else if (noting) pd_note_max(&largest, row_note);
@@ -545,8 +547,9 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
     if (tallied) pd_atom_virial(&far_virial, x + 3 * a, reaction + 4 * a, vol[a], directed);
     if (ends) note_atom[a] = reaction[4 * a + 3];
     if (in_lane) {
-      far_energy[a % PD_ENERGY_LANES] += reaction[4 * a + 3];
-      if (eatom) eatom[a] += reaction[4 * a + 3];
+      const double e = pd_energy_scale(escale, estride, a) * reaction[4 * a + 3];
+      far_energy[a % PD_ENERGY_LANES] += e;
+      if (eatom) eatom[a] += e;
     }
     for (int c = 0; c < 4; c++) reaction[4 * a + c] = 0.0;    /* (vectorized with the adds) */
   }
@@ -566,7 +569,7 @@ pd_force_loop(const pd_loop *L, void *mat, pd_strain_fn strain, pd_force_fn forc
   pd_force_loop_on(L->b, L->type, L->ntypes, L->x, L->vol, L->f, L->reaction, L->nall, L->tally,
                    L->fail, mat, strain, force, ahead, changes, breaks_now, breaks_after,
                    may_break, notes, takes_notes, weighted, tallied, failing, kind,
-                   L->bond_by_bond);
+                   L->bond_by_bond, L->energy_scale, L->energy_scale_stride);
 }
 
 /* A kernel: pd_force_loop for one material, one law, one set of effects. */

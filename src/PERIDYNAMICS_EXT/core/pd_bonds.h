@@ -67,8 +67,9 @@ PD_INLINE double pd_per_length(double t, const pd_bond *bd)
 typedef struct pd_bond_force {
   double tl;                   /* force state over the current length, t / |Y|:
                                   f_i += V_j tl Y, f_j -= V_i tl Y (Y = x_j - x_i) */
-  double stored_i, stored_j;   /* energy density it stores at each end, per
-                                  unit volume of the partner (tallied) */
+  double stored;               /* energy density it stores at each end, per
+                                  unit volume of the partner, before that
+                                  end's factor (pd_loop.energy_scale; tallied) */
   double release_i, release_j; /* what it releases at each end if it breaks now */
   double release;              /* their sum, as the energy law tests it: in
                                   the material's cheapest form (pd/ordinary's

@@ -24,6 +24,13 @@ typedef struct pd_loop {
                               in the force loop and the sums (tests compare the two
                               ways' arithmetic; pd/corr's stabilization, which the
                               force loop's pass leaves out) */
+  /* each end's factor of a bond's stored energy (pd_bond_force.stored):
+   * atom a's at energy_scale[energy_scale_stride * a] (owned + ghost), or
+   * 1 for every atom when NULL. A material whose bonds store s_i e and
+   * s_j e at their ends (pd/ordinary: s = B) sets it; a tallied step then
+   * sums e alone per bond and takes each atom's factor once. */
+  const double *energy_scale;
+  int energy_scale_stride;
 } pd_loop;
 
 #endif

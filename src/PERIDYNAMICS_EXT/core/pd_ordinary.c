@@ -36,8 +36,7 @@ ordinary_bond(int kind, int uniform_b, const pd_ordinary_state *st, const pd_bon
   pd_bond_force bf;
   bf.tl = (ai + aj + (bi + bj) * eps) * w *
           pd_bond_strain_rate_per_length(kind, st->order, eps, bd);
-  bf.stored_i = we2 * bi;
-  bf.stored_j = we2 * bj;
+  bf.stored = we2;    /* times each end's B: pd_loop.energy_scale */
   bf.release_i = w * eps * (ai + 0.5 * bi * eps);
   bf.release_j = w * eps * (aj + 0.5 * bj * eps);
   bf.release = w * eps * (ai + aj + 0.5 * (bi + bj) * eps);
@@ -107,8 +106,11 @@ void pd_ordinary_forces(const pd_loop *L, const pd_ordinary_state *st)
       [PD_ORDER_ANY] = {any_kernels, any_cached_kernels},
   };
   const int kind = pd_order_kind(st->order);
+  pd_loop l = *L;
+  l.energy_scale = st->ab + 1;    /* B, interleaved with A */
+  l.energy_scale_stride = 2;
   pd_run_kernel(kind == PD_ORDER_HALF && st->uniform_b ? half_uniform_kernels : table[kind][kept(st)],
-                L, (void *) st);
+                &l, (void *) st);
 }
 
 PD_INLINE void weighted_strain(void *st, const pd_bond *bd, double eps, double *t)
