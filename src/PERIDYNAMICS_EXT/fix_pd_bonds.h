@@ -123,7 +123,8 @@ class FixPDBonds : public Fix {
   double *weighted_volume() const { return field(iweighted_volume); }
 
   // The same for a per-atom array that is not a field ('width' doubles per
-  // atom, up to the widest declared field and at least 2).
+  // atom; wider than the widest declared field, at least 3, it goes in
+  // slices of that width, one exchange each).
   void sum_to_owners(double *a, int width = 1);
   void max_to_owners(double *a, int width = 1);
   void copy_to_ghosts(double *a, int width = 1);

@@ -247,12 +247,26 @@ void FixPDBonds::max_to_owners(double *a, int width)
 }
 
 // LAMMPS sizes its buffers for comm_forward / comm_reverse doubles per atom
-// when a run is set up: the widest declared field, at least 2.
+// when a run is set up: the widest declared field, at least MIN_COMM_WIDTH.
+// A wider array goes in slices of that many columns, one exchange each (a
+// set-up's scratch, which a field would keep, and buffers sized for it,
+// for the whole run).
 void FixPDBonds::communicate(double *a, int width, int how)
 {
-  if (width < 1 || width > comm_forward)
-    error->all(FLERR, "Fix pd/bonds: a per-atom array of width {} cannot be communicated (1 to {}, "
-               "the widest declared field); declare it as a field", width, comm_forward);
+  if (width < 1) error->all(FLERR, "Fix pd/bonds: a per-atom array of width {} (a bug)", width);
+  if (width > comm_forward) {
+    const int nall = atom->nlocal + atom->nghost;
+    std::vector<double> slice((size_t) nall * comm_forward);
+    for (int first = 0; first < width; first += comm_forward) {
+      const int w = MIN(comm_forward, width - first);
+      for (int i = 0; i < nall; i++)
+        for (int c = 0; c < w; c++) slice[(size_t) i * w + c] = a[(size_t) i * width + first + c];
+      communicate(slice.data(), w, how);
+      for (int i = 0; i < nall; i++)
+        for (int c = 0; c < w; c++) a[(size_t) i * width + first + c] = slice[(size_t) i * w + c];
+    }
+    return;
+  }
   comm_array = a;
   comm_width = width;
   comm_max = how == MAX_TO_OWNERS;

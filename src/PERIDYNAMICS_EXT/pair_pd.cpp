@@ -30,7 +30,6 @@
 
 extern "C" {
 #include "pd_contact.h"
-#include "pd_directional.h"
 #include "pd_influence.h"
 #include "pd_material_file.h"
 #include "pd_quadrature.h"
@@ -1009,8 +1008,6 @@ std::vector<PDField> PairPD::fields_to_declare() const
   const int moved = PDField::MIGRATE | PDField::OUTPUT;
   all.push_back({"family_share", 1, moved});
   all.push_back({"calibrated_volume", 1, moved});
-  // the fit's sums, then its quartic forms (scratch of the first run's set-up)
-  if (directional) all.push_back({"directional_sums", pd_directional_moments(dim()), 0});
   if (law)
     for (const PDField &f : law->per_atom_fields()) all.push_back(f);
   return all;

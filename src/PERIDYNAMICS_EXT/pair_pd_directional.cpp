@@ -49,8 +49,9 @@ void PairPD::correct_directions(const std::vector<double> &share)
   directional_moment(power);
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const double *vol = atom->vfrac;
-  double *sums = bonds->field(field_index("directional_sums"));
-  for (int k = 0; k < nall * width; k++) sums[k] = 0.0;
+  // the fit's sums, then its quartic forms: scratch of this set-up only
+  std::vector<double> scratch((size_t) nall * width, 0.0);
+  double *sums = scratch.data();
 
   // each family's sums, at both ends of every bond (broken or not)
   bonds->each_reference_bond([&](int i, int j, const double *xi, double w) {
