@@ -58,7 +58,8 @@ void PairPD::correct_directions(const std::vector<double> &share)
     double n[3];
     const double r = unit_direction(xi, n);
     if (!(r > 0.0)) return;
-    const double stiff = w * pow(r, power);
+    // (the powers the materials take, 0 and 1, without a call to pow per bond)
+    const double stiff = w * (power == 0 ? 1.0 : power == 1 ? r : pow(r, power));
     pd_directional_add(d, n, stiff * vol[j], sums + (size_t) i * width);
     pd_directional_add(d, n, stiff * vol[i], sums + (size_t) j * width);
   });
@@ -90,8 +91,10 @@ void PairPD::correct_directions(const std::vector<double> &share)
   bonds->each_reference_bond([&](int i, int j, const double *xi, double) {
     double n[3];
     if (!(unit_direction(xi, n) > 0.0)) return;
-    lowest[i] = MAX(lowest[i], -pd_directional_factor(d, sums + (size_t) i * width, n));
-    lowest[j] = MAX(lowest[j], -pd_directional_factor(d, sums + (size_t) j * width, n));
+    double f[2];
+    pd_directional_factors(d, sums + (size_t) i * width, sums + (size_t) j * width, n, f);
+    lowest[i] = MAX(lowest[i], -f[0]);
+    lowest[j] = MAX(lowest[j], -f[1]);
   });
   bonds->max_to_owners(lowest.data());
   bigint limited = 0;
@@ -103,8 +106,9 @@ void PairPD::correct_directions(const std::vector<double> &share)
   bonds->scale_weights([&](int i, int j, const double *xi) {
     double n[3];
     if (!(unit_direction(xi, n) > 0.0)) return 1.0;
-    const double f = 0.5 * (pd_directional_factor(d, sums + (size_t) i * width, n) +
-                            pd_directional_factor(d, sums + (size_t) j * width, n));
+    double ends[2];
+    pd_directional_factors(d, sums + (size_t) i * width, sums + (size_t) j * width, n, ends);
+    const double f = 0.5 * (ends[0] + ends[1]);
     range[0] = MIN(range[0], f);
     range[1] = MIN(range[1], -f);
     return f;

@@ -116,6 +116,18 @@ int main(void)
       for (int b = 0; b < f.n; b++) lo = fmin(lo, pd_directional_factor(f.dim, form, f.dir[b]));
       snprintf(line, sizeof line, "%s: every factor positive (smallest %.3f)", what, lo);
       check_true(line, lo > 0.3);
+      /* two forms at once (a bond's ends): each as alone, to the bit */
+      double unit_form[PD_DIRECTIONAL_MAX_TERMS];
+      pd_directional_unit(f.dim, unit_form);
+      int same = 1;
+      for (int b = 0; b < f.n; b++) {
+        double two[2];
+        pd_directional_factors(f.dim, form, unit_form, f.dir[b], two);
+        same &= two[0] == pd_directional_factor(f.dim, form, f.dir[b]) &&
+                two[1] == pd_directional_factor(f.dim, unit_form, f.dir[b]);
+      }
+      snprintf(line, sizeof line, "%s: two forms at once as alone", what);
+      check_true(line, same);
     }
 
   /* the hexagonal lattice is isotropic already: f = 1 */

@@ -57,6 +57,12 @@ int pd_directional_limit(int dim, double *form, double smallest);
 /* The factor f(n) of a bond direction (unit n). */
 double pd_directional_factor(int dim, const double *form, const double n[3]);
 
+/* The factors of two forms (a bond's two ends) at one direction: the same
+ * numbers as pd_directional_factor, in f[0] and f[1], their two chains of
+ * adds side by side (one form's chain of adds was the time of a factor). */
+void pd_directional_factors(int dim, const double *form_a, const double *form_b, const double n[3],
+                            double f[2]);
+
 /* The form of a complete lattice family (pd_lattice.h), stiffness share
  * w V |xi|^power: what every interior atom of the lattice fits. Returns
  * pd_directional_fit's answer. */
