@@ -118,6 +118,17 @@ normal_component(const double *s, int a, const double n[3])
       2.0 * (s[o + 3] * n[0] * n[1] + s[o + 4] * n[0] * n[2] + s[o + 5] * n[1] * n[2]);
 }
 
+/* Row r of (X_i + X_j) xi for per-atom 3x3 tensors X (9 per atom in x):
+ * X_i through its pointer xi_t, X_j at an int offset (through a pointer to
+ * it, the force's first pass did not vectorize). The classical force (A)
+ * and the stabilization (F) both take it. */
+PD_INLINE double
+pair_tensor_row(const double *xi_t, const double *x, int j, int r, const double xi[3])
+{
+  return (xi_t[3 * r] + x[j + 3 * r]) * xi[0] + (xi_t[3 * r + 1] + x[j + 3 * r + 1]) * xi[1] +
+         (xi_t[3 * r + 2] + x[j + 3 * r + 2]) * xi[2];
+}
+
 /* A broken bond in contact (recontact) pushes as a bond-based spring in
  * the material's bond strain (extended: Seth-Hill order m, so that for
  * m <= 0 full collapse costs infinite energy, as for intact bonds), its
@@ -134,12 +145,10 @@ PD_INLINE double
 stabilizing_force(const pd_corr_state *st, const pd_bond *bd, const double *xi)
 {
   if (bd->len <= 0.0) return 0.0;
-  const double *f = st->defgrad, *fi = f + 9 * bd->i;
-  const int j = 9 * bd->j;  /* (an int offset, as in classical_force) */
+  const double *f = st->defgrad;
   double z = 0.0;
   for (int r = 0; r < 3; r++) {
-    const double fxi = 0.5 * ((fi[3 * r] + f[j + 3 * r]) * xi[0] + (fi[3 * r + 1] + f[j + 3 * r + 1]) * xi[1] +
-                              (fi[3 * r + 2] + f[j + 3 * r + 2]) * xi[2]);
+    const double fxi = 0.5 * pair_tensor_row(f + 9 * bd->i, f, 9 * bd->j, r, xi);
     z += (bd->d[r] - fxi) * bd->d[r];
   }
   return st->stabilization * st->spring[bd->tij] * z / (bd->len * bd->r0);
@@ -165,14 +174,8 @@ classical_force(const pd_corr_state *st, const pd_bond *bd, double eps, int dama
     return bf;
   }
   if (!alive(st, bd, damaged)) return bf;
-  const double *xi = st->xi + 3 * bd->idx;
-  /* (A_j at an int offset: through a pointer to it, the first pass did
-   * not vectorize) */
-  const double *a = st->tensor, *ai = a + 9 * bd->i;
-  const int j = 9 * bd->j;
-  for (int r = 0; r < 3; r++)
-    bf.v[r] = bd->w * ((ai[3 * r] + a[j + 3 * r]) * xi[0] + (ai[3 * r + 1] + a[j + 3 * r + 1]) * xi[1] +
-                       (ai[3 * r + 2] + a[j + 3 * r + 2]) * xi[2]);
+  const double *xi = st->xi + 3 * bd->idx, *a = st->tensor;
+  for (int r = 0; r < 3; r++) bf.v[r] = bd->w * pair_tensor_row(a + 9 * bd->i, a, 9 * bd->j, r, xi);
   if (stabilizing && st->stabilization > 0.0) add_central(&bf, bd, stabilizing_force(st, bd, xi));
   return bf;
 }

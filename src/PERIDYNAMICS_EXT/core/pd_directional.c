@@ -160,16 +160,9 @@ int pd_directional_fit(int dim, const double *moments, double *form)
 
 double pd_directional_factor(int dim, const double *form, const double n[3])
 {
-  const int count = pd_directional_terms(dim);
-  double p[3][9];
-  component_powers(n, 4, p);
-  double f = 0.0;
-  for (int a = 0; a < count; a++) {
-    int e[3];
-    monomial(dim, 4, a, e);
-    f += form[a] * monomial_value(p, e);
-  }
-  return f;
+  double f[2];
+  pd_directional_factors(dim, form, form, n, f);
+  return f[0];
 }
 
 void pd_directional_factors(int dim, const double *form_a, const double *form_b, const double n[3],

@@ -57,9 +57,10 @@ int pd_directional_limit(int dim, double *form, double smallest);
 /* The factor f(n) of a bond direction (unit n). */
 double pd_directional_factor(int dim, const double *form, const double n[3]);
 
-/* The factors of two forms (a bond's two ends) at one direction: the same
- * numbers as pd_directional_factor, in f[0] and f[1], their two chains of
- * adds side by side (one form's chain of adds was the time of a factor). */
+/* The factors of two forms (a bond's two ends) at one direction, in f[0]
+ * and f[1]: each form's the same numbers as alone (pd_directional_factor
+ * is the first of them), their two chains of adds side by side (one
+ * form's chain of adds was the time of a factor). */
 void pd_directional_factors(int dim, const double *form_a, const double *form_b, const double n[3],
                             double f[2]);
 
