@@ -36,9 +36,11 @@ ComputePDAtom::ComputePDAtom(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Illegal compute pd/atom command: name at least one field ({})", available(known));
   for (int iarg = 3; iarg < narg; iarg++) {
     const std::string name = arg[iarg];
-    Output o = {name, FIELD, 0, -1};
+    Output o = {name, FIELD, 0, -1, false};
     for (const PDField &f : known)
-      if (f.name == name) o.width = f.width;
+      if (f.name == name) o.width = f.width, o.on_demand = (f.flags & PDField::ON_DEMAND) != 0;
+    // the pair style computes it on the steps LAMMPS has this compute due
+    if (o.on_demand) timeflag = 1;
     if (name == "energy") {
       o.source = ENERGY;
       o.width = 1;
@@ -62,6 +64,13 @@ ComputePDAtom::~ComputePDAtom()
   memory->destroy(scratch);
   memory->destroy(vector);
   memory->destroy(array);
+}
+
+bool ComputePDAtom::lists(const std::string &name) const
+{
+  for (const Output &o : outputs)
+    if (o.name == name) return true;
+  return false;
 }
 
 // The output fields known now: the bond store's (its own, and those the
@@ -148,6 +157,7 @@ void ComputePDAtom::compute_peratom()
   const int nlocal = atom->nlocal, *mask = atom->mask;
   int col = 0;
   for (const Output &o : outputs) {
+    if (o.on_demand) current_or_error(o.name);
     const double *values = scratch;
     if (o.source == FIELD) values = bonds->field(o.id);
     else if (o.source == BOND_DILATATION) dilatation(scratch);
@@ -160,6 +170,20 @@ void ComputePDAtom::compute_peratom()
       }
     col += o.width;
   }
+}
+
+// An ON_DEMAND field is this step's only when the pair style computed it
+// now: when LAMMPS had this compute due (a dump, thermo or fix output
+// invokes it), not when a variable reads it between those.
+void ComputePDAtom::current_or_error(const std::string &name) const
+{
+  PairPD *pair = PairPD::active(force);
+  const bigint on = pair ? pair->computed_on(name) : -1;
+  if (on != update->ntimestep)
+    error->all(FLERR, "Compute pd/atom: field '{}' is computed on the steps this compute is due (by a "
+               "dump, thermo or fix output that uses it) and at each run's start; step {} is none "
+               "(last computed on step {}): use it from such an output, or 'run 0' first",
+               name, update->ntimestep, on);
 }
 
 // The dilatation when no style declares one (pd/bond): theta = d / m sum

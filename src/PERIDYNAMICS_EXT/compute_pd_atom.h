@@ -26,6 +26,7 @@ class ComputePDAtom : public Compute {
   void init() override;
   void compute_peratom() override;
   double memory_usage() override;
+  bool lists(const std::string &name) const;    // whether it outputs that field
 
  private:
   // ENERGY: the pair's per-atom energy; BOND_DILATATION: the linear
@@ -37,6 +38,7 @@ class ComputePDAtom : public Compute {
     Source source;
     int width;
     int id;    // the store's field id (FIELD)
+    bool on_demand;    // computed only when due (PDField::ON_DEMAND)
   };
   std::vector<Output> outputs;
   int ncols;
@@ -48,6 +50,7 @@ class ComputePDAtom : public Compute {
 
   std::vector<PDField> known_fields() const;
   std::string available(const std::vector<PDField> &) const;
+  void current_or_error(const std::string &name) const;
   void dilatation(double *out);
   void energy_density(double *out);
 };

@@ -6,6 +6,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "compute_pd_atom.h"
 #include "domain.h"
 #include "error.h"
 #include "fix_pd_bonds.h"
@@ -1011,6 +1012,24 @@ std::vector<PDField> PairPD::fields_to_declare() const
   if (law)
     for (const PDField &f : law->per_atom_fields()) all.push_back(f);
   return all;
+}
+
+bool PairPD::demanded(const std::string &name)
+{
+  bool due = update->setupflag;
+  for (Compute *c : PDCompat::computes(modify)) {
+    auto *output = dynamic_cast<ComputePDAtom *>(c);
+    // (matchstep only drops the schedule's past steps)
+    if (output && output->lists(name) && output->matchstep(update->ntimestep)) due = true;
+  }
+  if (due) demanded_on[name] = update->ntimestep;
+  return due;
+}
+
+bigint PairPD::computed_on(const std::string &name) const
+{
+  const auto it = demanded_on.find(name);
+  return it == demanded_on.end() ? -1 : it->second;
 }
 
 void PairPD::declare_fields()

@@ -13,6 +13,7 @@
 #include "pd_family_spec.h"
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -134,6 +135,11 @@ class PairPD : public Pair, public PDFamilySource {
   // those, the calibration's and the failure law's: what the style
   // declares to the bond store
   std::vector<PDField> fields_to_declare() const;
+  // an ON_DEMAND field: whether this evaluation computes it (at set-up, or
+  // when a compute pd/atom listing it is due on this step: LAMMPS's own
+  // schedule, as for per-atom energy), and the step it last did (-1: never)
+  bool demanded(const std::string &name);
+  bigint computed_on(const std::string &name) const;
   // a bond-based solid: a bond's energy is its own (a critical stretch
   // from G_c is then calibrated on the family, core/pd_law_stretch.h), and
   // how much type t's stiffness is scaled by its own calibration
@@ -176,6 +182,7 @@ class PairPD : public Pair, public PDFamilySource {
   int nwork;
   std::vector<int> field_id;    // the bond store's ids of per_atom_fields(), in their order
   std::vector<PDField> declared;    // per_atom_fields() as of the last init
+  std::map<std::string, bigint> demanded_on;    // ON_DEMAND fields: the step last computed
   int field_index(const std::string &name) const;    // its id in the bond store, -1 if not declared
 
   // style hooks

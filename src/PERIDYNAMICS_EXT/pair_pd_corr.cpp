@@ -198,7 +198,7 @@ std::vector<PDField> PairPDCorr::per_atom_fields() const
   const int kept = PDField::OUTPUT | PDField::MIGRATE | PDField::RESTART;
   std::vector<PDField> f = {
       {"deformation_gradient", 9, PDField::OUTPUT | (stabilization > 0.0 ? PDField::FORWARD : 0)},
-      {"stress", 6, PDField::OUTPUT},
+      {"stress", 6, PDField::OUTPUT | PDField::ON_DEMAND},
       {"corr_tensor", 9, PDField::FORWARD},
       // each step's sums, and the family's shape sums (scratch, summed from
       // ghosts onto owners), and its shape (kept until bonds stop acting)
@@ -331,7 +331,7 @@ pd_corr_state PairPDCorr::state(const Fields &f)
 }
 
 // One owned atom: its history in, the law, its outputs and history out.
-void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, pd_tally &t)
+void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, bool with_stress, pd_tally &t)
 {
   const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
   double *eqps = f.eqps, *ep = f.plastic, *wp = f.work, *temp = f.temperature, *dmg = f.damage;
@@ -348,7 +348,7 @@ void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, pd_t
   pd_corr_increment inc;
   if (f.increment) memcpy(&inc, f.increment + (bigint) INCREMENT * i, sizeof(inc));
   const int ok = pd_corr_atom(&st, &material[ti], f.sums + (bigint) i * width, f.shape + (bigint) PD_CORR_SHAPE * i,
-                              &h, f.increment ? &inc : nullptr, update->dt, atom->rmass[i], &o);
+                              &h, f.increment ? &inc : nullptr, update->dt, atom->rmass[i], with_stress, &o);
   if (f.increment) memcpy(f.increment + (bigint) INCREMENT * i, &inc, sizeof(inc));
   if (ok < 0) {
     // error->one aborts the job: what this rank wrote so far must reach the log
@@ -360,7 +360,7 @@ void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, pd_t
                atom->tag[i], ti, MODEL_NAMES[model]);
   }
   memcpy(f.defgrad + 9 * i, o.F, sizeof(o.F));
-  memcpy(f.stress + 6 * i, o.stress, sizeof(o.stress));
+  if (with_stress) memcpy(f.stress + 6 * i, o.stress, sizeof(o.stress));
   memcpy(f.tensor + 9 * i, o.tensor, sizeof(o.tensor));
   if (ep) {
     for (int k = 0; k < 6; k++) ep[6 * i + k] = h.plastic[k];
@@ -444,7 +444,9 @@ void PairPDCorr::compute(int eflag, int vflag)
   st.sum = f.sums;
   pd_corr_sums(&e.L, &st);
   bonds->sum_to_owners(field_index("corr_sums"));
-  for (int i = 0; i < nlocal; i++) atom_step(i, st, f, e.tally);
+  // the Cauchy stress is an output only (extended's takes an eigen solve per atom)
+  const bool with_stress = demanded("stress");
+  for (int i = 0; i < nlocal; i++) atom_step(i, st, f, with_stress, e.tally);
 
   for (const PDField &decl : declared)
     if (decl.flags & PDField::FORWARD && decl.name != "jc_damage") bonds->forward(field_index(decl.name));

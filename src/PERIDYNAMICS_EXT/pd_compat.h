@@ -122,6 +122,12 @@ namespace PDCompat {
     return std::vector<class Fix *>(modify->fix, modify->fix + modify->nfix);
   }
 
+  /* Every compute, in the order they were defined. */
+  inline std::vector<class Compute *> computes(Modify *modify)
+  {
+    return std::vector<class Compute *>(modify->compute, modify->compute + modify->ncompute);
+  }
+
   /* After a change of update->dt: what depends on it, as fix dt/reset does. */
   inline void time_step_changed(class LAMMPS *lmp)
   {

@@ -19,7 +19,9 @@ struct PDField {
     FORWARD = 1,    // ghosts need it: forward(id) copies owners to ghosts
     MIGRATE = 2,    // it belongs to the atom: moves with it to another processor
     RESTART = 4,    // written to restart files, read back by name
-    OUTPUT = 8      // listed by compute pd/atom under its name
+    OUTPUT = 8,     // listed by compute pd/atom under its name
+    ON_DEMAND = 16  // an output computed only when a compute pd/atom listing
+                    // it is due (PairPD::demanded), not on every step
   };
   std::string name;
   int width;    // doubles per atom (1 scalar, 2 a pair, 9 a tensor, ...)

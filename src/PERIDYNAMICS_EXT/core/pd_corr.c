@@ -369,7 +369,7 @@ int pd_corr_shape(const pd_corr_state *st, const double *shape_sum, double *shap
 
 int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const double *sum,
                  const double *shape, pd_corr_history *h, pd_corr_increment *inc, double dt,
-                 double rho, pd_corr_atom_out *o)
+                 double rho, int with_stress, pd_corr_atom_out *o)
 {
   memset(o, 0, sizeof(*o));
   const double *Kinv = shape, *M = shape + 9;
@@ -392,24 +392,23 @@ int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const dou
   if (!pd_corr_law_stress(mat, st->order, E, h, dt, rho, &s)) return -1;
   o->energy = s.energy;
 
-  /* S for the Cauchy stress (and classical's P); the extended strain's
+  /* S for classical's P and the Cauchy stress; the extended strain's
    * principal frame stands in for C's */
-  double S[6], Sf[9], P[9];
   if (st->extended) {
+    pd_sym4_apply(M, s.T, o->tensor);
+    if (!with_stress) return 1;
     double e[3];
     pd_sym_eigen(E, e, q);
     for (int k = 0; k < 3; k++) c[k] = pd_seth_hill_inverse(st->order, e[k]);
   }
+  double S[6], Sf[9], P[9];
   pd_corr_second_pk(st->order, c, q, s.T, S);
   pd_sym_to_full(S, Sf);
   pd_mat_mul(o->F, Sf, P);
-  if (st->extended) {
-    double sigma[6];
-    pd_sym4_apply(M, s.T, sigma);
-    memcpy(o->tensor, sigma, sizeof(sigma));
-  } else {
+  if (!st->extended) {
     pd_mat_mul(P, Kinv, o->tensor);
     if (st->dim == 2) o->tensor[2] = o->tensor[5] = o->tensor[6] = o->tensor[7] = o->tensor[8] = 0.0;
+    if (!with_stress) return 1;
   }
   const double J = pd_det3(o->F);
   if (J > 0.0) {

@@ -111,17 +111,19 @@ void pd_corr_forces(const pd_loop *L, const pd_corr_state *st);
 
 /* One atom: from its sums to its deformation gradient, strain, stress (the
  * law advances h; with inc, an evaluation at the same strain repeats the
- * increment, see pd_corr_increment) and the tensor its bonds need. */
+ * increment, see pd_corr_increment) and the tensor its bonds need. The
+ * Cauchy stress only 'with_stress' (an output: the bonds need the tensor
+ * alone, and extended's stress takes an eigen solve of E per atom). */
 typedef struct pd_corr_atom_out {
   double F[9];
   double tensor[9];   /* A = P K^-1 (classical) or Sigma = M^-1 : T (extended) */
-  double stress[6];   /* Cauchy stress */
+  double stress[6];   /* Cauchy stress (zero unless with_stress) */
   double energy;      /* stored energy density */
 } pd_corr_atom_out;
 /* Returns 1; 0 for a flat family (its shape zero: out all zero) and -1
  * when the law rejects the state (out undefined). */
 int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const double *sum,
                  const double *shape, pd_corr_history *h, pd_corr_increment *inc, double dt,
-                 double rho, pd_corr_atom_out *out);
+                 double rho, int with_stress, pd_corr_atom_out *out);
 
 #endif
