@@ -86,7 +86,8 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   bool thermal() const { return model == PD_CORR_JOHNSON_COOK && any_type_gives(PD_CORR_T_MELT); }
   bool damage() const { return model == PD_CORR_JOHNSON_COOK && any_type_gives(PD_CORR_D1); }
   pd_corr_state state(const Fields &f);
-  void atom_step(int i, const pd_corr_state &st, const Fields &f, bool with_stress, pd_tally &t);
+  void atom_step(int i, const pd_corr_state &st, const Fields &f, const pd_corr_kinematics &kin,
+                 bool with_stress, pd_tally &t);
   void update_shapes(const pd_loop &L, pd_corr_state st, const Fields &f);
   bool dead_changed(const pd_corr_state &st) const;
 };

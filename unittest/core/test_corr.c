@@ -273,19 +273,25 @@ static corr_case corr_make(int extended, int dim, double order, pd_corr_model mo
   return cc;
 }
 
-/* pd_corr_atom without the stress (an output) gives what the bonds need to
- * the bit, and the stress zero: counted over every atom corr_run steps */
-static int stress_left_out_atoms, stress_left_out_differs;
+/* Over every atom corr_run steps: its kinematics alone are those of its
+ * block (the frames solved side by side), and pd_corr_atom without the
+ * stress (an output) gives what the bonds need to the bit, the stress
+ * zero. */
+static int atoms_checked, alone_differs, stress_left_out_differs;
 static void stress_left_out(const pd_corr_state *st, const corr_case *cc, const double *sum,
-                            const double *shape, const pd_corr_atom_out *with)
+                            const double *shape, const pd_corr_kinematics *kin,
+                            const pd_corr_atom_out *with)
 {
+  pd_corr_kinematics alone;
+  pd_corr_kinematics_of(st, 1, sum, shape, &alone);
+  alone_differs += memcmp(&alone, kin, sizeof alone) != 0;
   pd_corr_history h;
   pd_corr_atom_out o;
   memset(&h, 0, sizeof h);
-  pd_corr_atom(st, &cc->mat, sum, shape, &h, NULL, 0.0, 0.0, 0, &o);
+  pd_corr_atom(st, &cc->mat, sum, shape, kin, &h, NULL, 0.0, 0.0, 0, &o);
   double stress = 0.0;
   for (int k = 0; k < 6; k++) stress += fabs(o.stress[k]);
-  stress_left_out_atoms++;
+  atoms_checked++;
   stress_left_out_differs += memcmp(o.F, with->F, sizeof o.F) != 0 || memcmp(o.tensor, with->tensor, sizeof o.tensor) != 0 ||
       memcmp(&o.energy, &with->energy, sizeof o.energy) != 0 || stress != 0.0;
 }
@@ -333,14 +339,16 @@ static double corr_run(const body *b, const corr_case *cc, const double *x, doub
   for (int g = b->nown; g < n; g++)
     for (int c = 0; c < width; c++) sum[b->owner[g] * width + c] += sum[g * width + c];
   double energy = 0.0;
+  pd_corr_kinematics *kin = malloc(sizeof(pd_corr_kinematics) * (size_t) b->nown);
+  pd_corr_kinematics_of(&st, b->nown, sum, shape, kin);
   for (int i = 0; i < b->nown; i++) {
     pd_corr_history h;
     pd_corr_atom_out o;
     memset(&h, 0, sizeof h);
-    if (pd_corr_atom(&st, &cc->mat, sum + (size_t) i * width, shape + (size_t) i * PD_CORR_SHAPE, &h, NULL,
-                     0.0, 0.0, 1, &o) != 1)
+    if (pd_corr_atom(&st, &cc->mat, sum + (size_t) i * width, shape + (size_t) i * PD_CORR_SHAPE, kin + i, &h,
+                     NULL, 0.0, 0.0, 1, &o) != 1)
       energy = NAN;
-    stress_left_out(&st, cc, sum + (size_t) i * width, shape + (size_t) i * PD_CORR_SHAPE, &o);
+    stress_left_out(&st, cc, sum + (size_t) i * width, shape + (size_t) i * PD_CORR_SHAPE, kin + i, &o);
     memcpy(tensor + 9 * i, o.tensor, sizeof o.tensor);
     memcpy(defgrad + 9 * i, o.F, sizeof o.F);
     energy += l->vol[i] * o.energy;
@@ -368,6 +376,7 @@ static double corr_run(const body *b, const corr_case *cc, const double *x, doub
   free(shape);
   free(xi);
   free(tensor);
+  free(kin);
   free(defgrad);
   return energy;
 }
@@ -389,8 +398,13 @@ static void test_tensor(void)
    * sweeps of three rotations converge: 1e-13 leaves a factor 100. */
   {
     double rec = 0.0, orth = 0.0;
+    /* the same 200 tensors side by side (pd_sym_eigen_many: lanes of
+     * tensors that converge after different numbers of sweeps, and a last
+     * group of 200 mod the lanes): each one's numbers are pd_sym_eigen's */
+    double all_s[6 * 200], all_l[3 * 200], all_q[9 * 200];
+    int many_differs = 0;
     for (int t = 0; t < 200; t++) {
-      double s[6], l[3], q[9], back[6], qtq[9];
+      double *s = all_s + 6 * t, l[3], q[9], back[6], qtq[9];
       const double scale = pow(10.0, 6.0 * urand(&seed));
       for (int k = 0; k < 6; k++) s[k] = scale * urand(&seed);
       if (t == 0) {  /* a double eigenvalue: R diag(2, 2, -1) R^T */
@@ -402,11 +416,19 @@ static void test_tensor(void)
       if (t == 1) s[3] = s[4] = s[5] = 0.0;
       if (t == 2) s[3] = 1e-20 * s[0], s[4] = s[5] = 0.0;
       pd_sym_eigen(s, l, q);
+      memcpy(all_l + 3 * t, l, sizeof l);
+      memcpy(all_q + 9 * t, q, sizeof q);
       pd_sym_from_eigen(l, q, back);
       rec = fmax(rec, sym_err(back, s));
       t_mul(q, q, qtq);
       for (int k = 0; k < 9; k++) orth = fmax(orth, fabs(qtq[k] - (k % 4 == 0)));
     }
+    double many_l[3 * 200], many_q[9 * 200];
+    pd_sym_eigen_many(200, all_s, many_l, many_q);
+    for (int t = 0; t < 200; t++)
+      many_differs += memcmp(many_l + 3 * t, all_l + 3 * t, 3 * sizeof(double)) != 0 ||
+          memcmp(many_q + 9 * t, all_q + 9 * t, 9 * sizeof(double)) != 0;
+    check_true("pd_sym_eigen_many: each of the 200 tensors as pd_sym_eigen's, to the bit", many_differs == 0);
     check_rel("pd_sym_eigen: Q diag(l) Q^T = s (200 tensors, rel)", rec, 0.0, 1e-13);
     check_rel("pd_sym_eigen: Q^T Q = 1", orth, 0.0, 1e-13);
     /* known eigenvalues of R diag(3, -1, 0.5) R^T (in any order) */
@@ -793,7 +815,9 @@ static void test_degenerate(void)
   double ssum[PD_CORR_SHAPE_SUMS_CLASSICAL] = {0}, sum[PD_CORR_SUMS_CLASSICAL] = {0};
   double shape[PD_CORR_SHAPE];
   int rc = pd_corr_shape(&st, ssum, shape);
-  int rca = pd_corr_atom(&st, &cc.mat, sum, shape, &hist, NULL, 0.0, 0.0, 1, &o);
+  pd_corr_kinematics kin;
+  pd_corr_kinematics_of(&st, 1, sum, shape, &kin);
+  int rca = pd_corr_atom(&st, &cc.mat, sum, shape, &kin, &hist, NULL, 0.0, 0.0, 1, &o);
   double norm = fabs(o.energy);
   for (int k = 0; k < 9; k++) norm += fabs(o.F[k]) + fabs(o.tensor[k]) + fabs(shape[k]);
   check_true("pd_corr_shape, pd_corr_atom: no bonds: return 0, out zero", rc == 0 && rca == 0 && norm == 0.0);
@@ -814,7 +838,8 @@ static void test_degenerate(void)
     for (int k = 0; k < 6; k++) ssum[k] = K[k];
     for (int k = 0; k < 6; k++) sum[3 * ROW[k] + COL[k]] = sum[3 * COL[k] + ROW[k]] = K[k];
     rc = pd_corr_shape(&st, ssum, shape);
-    rca = pd_corr_atom(&st, &cc.mat, sum, shape, &hist, NULL, 0.0, 0.0, 1, &o);
+    pd_corr_kinematics_of(&st, 1, sum, shape, &kin);
+    rca = pd_corr_atom(&st, &cc.mat, sum, shape, &kin, &hist, NULL, 0.0, 0.0, 1, &o);
     check_rel(what[t], rc == want[t] && rca == want[t], 1, 0.0);
   }
 }
@@ -1156,8 +1181,11 @@ int main(void)
   test_j2();
   test_johnson_cook();
   char what[160];
+  snprintf(what, sizeof what, "pd_corr_kinematics_of: an atom alone as in its block, to the bit (%d atoms)",
+           atoms_checked);
+  check_true(what, atoms_checked > 1000 && alone_differs == 0);
   snprintf(what, sizeof what, "pd_corr_atom without the stress: F, tensor, energy to the bit, stress zero (%d atoms)",
-           stress_left_out_atoms);
-  check_true(what, stress_left_out_atoms > 1000 && stress_left_out_differs == 0);
+           atoms_checked);
+  check_true(what, atoms_checked > 1000 && stress_left_out_differs == 0);
   return check_summary();
 }

@@ -329,23 +329,16 @@ void pd_corr_shape_sums(const pd_loop *L, const pd_corr_state *st)
 
 /* ---- per atom ----------------------------------------------------------- */
 
-/* The strain of order m of C = F^T F; its principal frame in (c, q).
- * C - 1 = H + H^T + H^T H with H = F - 1 keeps the digits of small strains. */
-static void lagrangian_strain(double m, const double F[9], double E[6], double c[3], double q[9])
+/* C - 1 of F, as H + H^T + H^T H with H = F - 1: small strains keep their
+ * digits. */
+static void stretch_excess(const double F[9], double excess[6])
 {
-  double H[9], HtH[9], excess[6], a[3], e[3];
+  double H[9], HtH[9];
   for (int k = 0; k < 9; k++) H[k] = F[k] - (k % 4 == 0);
   pd_mat_tmul(H, H, HtH);
   for (int k = 0; k < 9; k++) HtH[k] += H[k] + H[3 * (k % 3) + k / 3];
   pd_full_to_sym(HtH, excess);
-  pd_sym_eigen(excess, a, q);
-  for (int k = 0; k < 3; k++) {
-    c[k] = 1.0 + a[k];
-    e[k] = pd_seth_hill_excess(m, a[k]);
-  }
-  pd_sym_from_eigen(e, q, E);
 }
-
 
 int pd_corr_shape(const pd_corr_state *st, const double *shape_sum, double *shape)
 {
@@ -367,25 +360,60 @@ int pd_corr_shape(const pd_corr_state *st, const double *shape_sum, double *shap
   return 1;
 }
 
+void pd_corr_kinematics_of(const pd_corr_state *st, int n, const double *sums, const double *shapes,
+                           pd_corr_kinematics *kin)
+{
+  enum { CHUNK = 64 };
+  const int width = st->extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
+  double excess[6 * CHUNK], a[3 * CHUNK], q[9 * CHUNK];
+  for (int k0 = 0; k0 < n; k0 += CHUNK) {
+    const int m = n - k0 < CHUNK ? n - k0 : CHUNK;
+    for (int k = 0; k < m; k++) {
+      pd_corr_kinematics *o = kin + k0 + k;
+      const double *sum = sums + (size_t) width * (k0 + k), *Kinv = shapes + (size_t) PD_CORR_SHAPE * (k0 + k);
+      memset(o, 0, sizeof(*o));
+      memset(excess + 6 * k, 0, 6 * sizeof(double));
+      o->flat = Kinv[0] == 0.0 && Kinv[4] == 0.0;
+      if (o->flat) continue;
+      double N[9];
+      memcpy(N, sum, sizeof(N));
+      /* 2D: F_33 = 1 (plane strain kinematics; a plane stress law sets its
+       * own E_33) */
+      if (st->dim == 2) N[8] = 1.0 / Kinv[8];
+      pd_mat_mul(N, Kinv, o->F);
+      if (!st->extended) stretch_excess(o->F, excess + 6 * k);
+    }
+    if (st->extended) continue;
+    pd_sym_eigen_many(m, excess, a, q);
+    for (int k = 0; k < m; k++) {
+      memcpy(kin[k0 + k].a, a + 3 * k, sizeof(kin->a));
+      memcpy(kin[k0 + k].q, q + 9 * k, sizeof(kin->q));
+    }
+  }
+}
+
 int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const double *sum,
-                 const double *shape, pd_corr_history *h, pd_corr_increment *inc, double dt,
-                 double rho, int with_stress, pd_corr_atom_out *o)
+                 const double *shape, const pd_corr_kinematics *kin, pd_corr_history *h,
+                 pd_corr_increment *inc, double dt, double rho, int with_stress,
+                 pd_corr_atom_out *o)
 {
   memset(o, 0, sizeof(*o));
   const double *Kinv = shape, *M = shape + 9;
-  if (Kinv[0] == 0.0 && Kinv[4] == 0.0) return 0;  /* a flat family */
-  double N[9];
-  memcpy(N, sum, sizeof(N));
-  /* 2D: F_33 = 1 (plane strain kinematics; a plane stress law sets its own
-   * E_33) */
-  if (st->dim == 2) N[8] = 1.0 / Kinv[8];
-  pd_mat_mul(N, Kinv, o->F);
+  if (kin->flat) return 0;
+  memcpy(o->F, kin->F, sizeof(o->F));
 
+  /* the strain of order m, classical from C's principal frame */
   double E[6], c[3], q[9];
   if (st->extended) {
     pd_sym4_apply(M, sum + 9, E);
   } else {
-    lagrangian_strain(st->order, o->F, E, c, q);
+    double e[3];
+    for (int k = 0; k < 3; k++) {
+      c[k] = 1.0 + kin->a[k];
+      e[k] = pd_seth_hill_excess(st->order, kin->a[k]);
+    }
+    memcpy(q, kin->q, sizeof(q));
+    pd_sym_from_eigen(e, q, E);
   }
   if (inc) pd_corr_increment_enter(inc, E, h);
   pd_corr_stress s;

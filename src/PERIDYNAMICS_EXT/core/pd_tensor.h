@@ -22,6 +22,11 @@ double pd_inverse3(const double a[9], double inv[9], double tiny);
 /* Eigen-decomposition of a symmetric tensor: s = Q diag(l) Q^T, the
  * eigenvectors in Q's columns (cyclic Jacobi, converged to round-off). */
 void pd_sym_eigen(const double s[6], double l[3], double q[9]);
+/* The same for n tensors (6 numbers each in s; 3 in l and 9 in q each),
+ * solved side by side in vector lanes: each one's numbers are those of
+ * pd_sym_eigen, to the bit, at a fraction of the time per tensor (the
+ * solve is a chain of roots and divides that one tensor alone waits on). */
+void pd_sym_eigen_many(int n, const double *s, double *l, double *q);
 
 /* s = Q diag(l) Q^T; t' = Q^T t Q (both symmetric). */
 void pd_sym_from_eigen(const double l[3], const double q[9], double s[6]);
