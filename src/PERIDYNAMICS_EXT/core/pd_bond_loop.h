@@ -706,8 +706,14 @@ typedef struct pd_chunk_bonds {
   double d[3][PD_CHUNK], len[PD_CHUNK], len2[PD_CHUNK], r0[PD_CHUNK], w[PD_CHUNK];
 } pd_chunk_bonds;
 
-/* Bond k of such a chunk (of atom i's row, from slot row), as
- * pd_bond_load_ahead left it. */
+/* A bond as pd_bond_load_ahead left it, into slot k of such a chunk, and
+ * back (of atom i's row, from slot row): the numbers a late value reads. */
+PD_INLINE void pd_chunk_keep(pd_chunk_bonds *restrict cb, int k, const pd_bond *bd)
+{
+  for (int c = 0; c < 3; c++) cb->d[c][k] = bd->d[c];
+  cb->len[k] = bd->len, cb->len2[k] = bd->len2, cb->r0[k] = bd->r0;
+  cb->w[k] = bd->w;
+}
 PD_INLINE pd_bond pd_chunk_bond(const pd_chunk_bonds *restrict cb, const int *restrict far, int i,
                                 int row, int k)
 {
@@ -715,6 +721,22 @@ PD_INLINE pd_bond pd_chunk_bond(const pd_chunk_bonds *restrict cb, const int *re
                       .r0 = cb->r0[k], .w = cb->w[k], .len = cb->len[k], .len2 = cb->len2[k],
                       .d = {cb->d[0][k], cb->d[1][k], cb->d[2][k]}};
   return bd;
+}
+
+/* Bond k of a chunk of pd_current_sums_late: its values formed from the
+ * chunk's numbers and strain, added onto si (a half of atom i's sum) and
+ * sum[j]. */
+PD_INLINE void
+pd_late_sum_bond(double *restrict si, double *restrict sum, int width, void *mat,
+                 pd_bond_strain_value_fn value, const pd_chunk_bonds *restrict cb,
+                 const double *restrict eb, const int *restrict far, int i, int row, int k,
+                 const double *restrict vol, double vi)
+{
+  double t[PD_MAX_SUM_WIDTH];
+  for (int c = 0; c < width; c++) t[c] = 0.0;  /* (as pd_current_sum_bond) */
+  const pd_bond bk = pd_chunk_bond(cb, far, i, row, k);
+  value(mat, &bk, eb[k], t);
+  pd_scatter_sum(si, sum, width, t, far[k], vol, vi);
 }
 
 /* Its first pass over bonds row .. row+m-1 of a row, as pd_force_bonds: the
@@ -737,13 +759,8 @@ pd_current_sum_bonds(const pd_loop *L, int width, const double xi[3], int i, int
     broken |= -(long long) pd_bond_load_ahead(&bd, b, NULL, 0, L->x, xi, row + k, weighted, failing);
     const double eps = strain(mat, &bd);
     if (eb) eb[k] = eps;
-    if (cb) {
-      for (int c = 0; c < 3; c++) cb->d[c][at + k] = bd.d[c];
-      cb->len[at + k] = bd.len, cb->len2[at + k] = bd.len2, cb->r0[at + k] = bd.r0;
-      cb->w[at + k] = bd.w;
-    } else {
-      value(mat, &bd, eps, tb + k * width);
-    }
+    if (cb) pd_chunk_keep(cb, at + k, &bd);
+    else value(mat, &bd, eps, tb + k * width);
   }
   return broken != 0;
 }
@@ -808,13 +825,14 @@ pd_current_sums_on(const pd_loop *L, double *restrict sum, int width, void *mat,
         if (keep)
           for (int k = 0; k < m; k++) keep[row + k0 + k] = eb[k];
         if (late) {
-          for (int k = 0; k < m; k++) {
-            double t[PD_MAX_SUM_WIDTH];
-            for (int c = 0; c < width; c++) t[c] = 0.0;  /* (as pd_current_sum_bond) */
-            const pd_bond bk = pd_chunk_bond(&cb, far, i, row + k0, k);
-            value(mat, &bk, eb[k], t);
-            pd_scatter_sum(k & 1 ? odd : even, sum, width, t, far[k], vol, vi);
+          /* (each half named, as below: a half chosen per bond by k & 1
+           * was one pointer, and each bond's adds waited on its loads) */
+          int k = 0;
+          for (; k + 1 < m; k += 2) {
+            pd_late_sum_bond(even, sum, width, mat, value, &cb, eb, far, i, row + k0, k, vol, vi);
+            pd_late_sum_bond(odd, sum, width, mat, value, &cb, eb, far, i, row + k0, k + 1, vol, vi);
           }
+          if (k < m) pd_late_sum_bond(even, sum, width, mat, value, &cb, eb, far, i, row + k0, k, vol, vi);
           continue;
         }
         int k = 0;
