@@ -6,47 +6,6 @@
 #include <math.h>
 #include <string.h>
 
-/* full index of the symmetric components xx, yy, zz, xy, xz, yz */
-static const int SYM_ROW[6] = {0, 1, 2, 0, 0, 1};
-static const int SYM_COL[6] = {0, 1, 2, 1, 2, 2};
-
-void pd_sym_to_full(const double s[6], double a[9])
-{
-  for (int k = 0; k < 6; k++) a[3 * SYM_ROW[k] + SYM_COL[k]] = a[3 * SYM_COL[k] + SYM_ROW[k]] = s[k];
-}
-
-void pd_full_to_sym(const double a[9], double s[6])
-{
-  for (int k = 0; k < 6; k++)
-    s[k] = 0.5 * (a[3 * SYM_ROW[k] + SYM_COL[k]] + a[3 * SYM_COL[k] + SYM_ROW[k]]);
-}
-
-void pd_mat_mul(const double a[9], const double b[9], double c[9])
-{
-  for (int r = 0; r < 3; r++)
-    for (int k = 0; k < 3; k++)
-      c[3 * r + k] = a[3 * r] * b[k] + a[3 * r + 1] * b[3 + k] + a[3 * r + 2] * b[6 + k];
-}
-
-void pd_mat_tmul(const double a[9], const double b[9], double c[9])
-{
-  for (int r = 0; r < 3; r++)
-    for (int k = 0; k < 3; k++) c[3 * r + k] = a[r] * b[k] + a[3 + r] * b[3 + k] + a[6 + r] * b[6 + k];
-}
-
-void pd_mat_mult(const double a[9], const double b[9], double c[9])
-{
-  for (int r = 0; r < 3; r++)
-    for (int k = 0; k < 3; k++)
-      c[3 * r + k] = a[3 * r] * b[3 * k] + a[3 * r + 1] * b[3 * k + 1] + a[3 * r + 2] * b[3 * k + 2];
-}
-
-double pd_det3(const double a[9])
-{
-  return a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
-      a[2] * (a[3] * a[7] - a[4] * a[6]);
-}
-
 double pd_inverse3(const double a[9], double inv[9], double tiny)
 {
   const double det = pd_det3(a);
@@ -163,33 +122,6 @@ void pd_sym_eigen_many(int n, const double *s, double *l, double *q)
 void pd_sym_eigen(const double s[6], double l[3], double q[9])
 {
   jacobi(1, 1, sweep_one, s, l, q);
-}
-
-void pd_sym_from_eigen(const double l[3], const double q[9], double s[6])
-{
-  for (int k = 0; k < 6; k++) {
-    const int r = SYM_ROW[k], c = SYM_COL[k];
-    s[k] = q[3 * r] * l[0] * q[3 * c] + q[3 * r + 1] * l[1] * q[3 * c + 1] +
-        q[3 * r + 2] * l[2] * q[3 * c + 2];
-  }
-}
-
-void pd_sym_rotate_to(const double q[9], const double t[6], double out[6])
-{
-  double a[9], qt_a[9], b[9];
-  pd_sym_to_full(t, a);
-  pd_mat_tmul(q, a, qt_a);
-  pd_mat_mul(qt_a, q, b);
-  pd_full_to_sym(b, out);
-}
-
-void pd_sym_rotate_from(const double q[9], const double t[6], double out[6])
-{
-  double a[9], qa[9], b[9];
-  pd_sym_to_full(t, a);
-  pd_mat_mul(q, a, qa);
-  pd_mat_mult(qa, q, b);
-  pd_full_to_sym(b, out);
 }
 
 #define SQRT2 1.41421356237309504880
