@@ -385,10 +385,9 @@ void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, cons
 void PairPDCorr::update_shapes(const pd_loop &L, pd_corr_state st, const Fields &f)
 {
   const int nall = atom->nlocal + atom->nghost;
-  if (st.damage) {
-    dead_at_shapes.resize(nall);
+  dead_at_shapes.assign(nall, 0);
+  if (st.damage)
     for (int i = 0; i < nall; i++) dead_at_shapes[i] = pd_corr_past_damage(&st, i);
-  }
   const int width = extended ? PD_CORR_SHAPE_SUMS_EXTENDED : PD_CORR_SHAPE_SUMS_CLASSICAL;
   for (bigint k = 0; k < (bigint) nall * width; k++) f.shape_sums[k] = 0.0;
   st.sum = f.shape_sums;
@@ -399,17 +398,23 @@ void PairPDCorr::update_shapes(const pd_loop &L, pd_corr_state st, const Fields 
   shape_stale = false;
 }
 
-// Whether an atom (owned or ghost) crossed D_c since the shapes were
-// computed, on any rank (collective: the ranks then recompute them
-// together). Damage below D_c leaves every bond acting, so the shapes stay
-// those of the last computation, to the bit.
-bool PairPDCorr::dead_changed(const pd_corr_state &st) const
+// Over every rank's owned atoms (collective): whether an atom is past D_c,
+// and whether one crossed it since the shapes were computed (its owner
+// sees it; the ranks then recompute the shapes together). Damage below D_c
+// leaves every bond acting, so the shapes stay those of the last
+// computation, to the bit.
+void PairPDCorr::damage_state(const pd_corr_state &st, bool &any_dead, bool &crossed) const
 {
-  const int nall = atom->nlocal + atom->nghost;
-  int mine = (int) dead_at_shapes.size() != nall, all;
-  for (int i = 0; i < nall && !mine; i++) mine = pd_corr_past_damage(&st, i) != dead_at_shapes[i];
-  MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
-  return all != 0;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  int mine[2] = {0, (int) dead_at_shapes.size() != nall}, all[2];
+  for (int i = 0; i < nlocal; i++) {
+    const int dead = pd_corr_past_damage(&st, i);
+    mine[0] |= dead;
+    if (!mine[1]) mine[1] = dead != dead_at_shapes[i];
+  }
+  MPI_Allreduce(mine, all, 2, MPI_INT, MPI_MAX, world);
+  any_dead = all[0] != 0;
+  crossed = all[1] != 0;
 }
 
 void PairPDCorr::compute(int eflag, int vflag)
@@ -421,19 +426,26 @@ void PairPDCorr::compute(int eflag, int vflag)
   const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
   const Fields f = fields();
   pd_corr_state st = state(f);
-  // the damage of both ends decides whether a bond counts: the same values
-  // in both passes (the owners' are updated in between)
+  // once an atom anywhere is past D_c, the damage of both ends decides
+  // whether a bond counts: the same values in both passes (the owners' are
+  // updated in between); before, no bond needs them (nor the ghosts' copies)
   std::vector<double> damage_used;
+  bool crossed = false;
   if (damage()) {
-    bonds->forward(field_index("jc_damage"));
-    damage_used.assign(st.damage, st.damage + nall);
-    st.damage = damage_used.data();
+    bool any_dead;
+    damage_state(st, any_dead, crossed);
+    if (any_dead) {
+      bonds->forward(field_index("jc_damage"));
+      damage_used.assign(st.damage, st.damage + nall);
+      st.damage = damage_used.data();
+    } else {
+      st.damage = nullptr;
+    }
   }
 
   Evaluation e;
   begin_evaluation(e);
   // bonds the store dropped as lost leave their families at reneighboring
-  const bool crossed = damage() && dead_changed(st);
   if (shape_stale || crossed || neighbor->ago == 0 || (e.fails && e.fail.replay))
     update_shapes(e.L, st, f);
   // no atom here past D_c (the shapes' flags are the current ones now):

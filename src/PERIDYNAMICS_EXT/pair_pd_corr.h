@@ -89,7 +89,7 @@ class PairPDCorr : public PairPD, public PDBondEnergies {
   void atom_step(int i, const pd_corr_state &st, const Fields &f, const pd_corr_kinematics &kin,
                  bool with_stress, pd_tally &t);
   void update_shapes(const pd_loop &L, pd_corr_state st, const Fields &f);
-  bool dead_changed(const pd_corr_state &st) const;
+  void damage_state(const pd_corr_state &st, bool &any_dead, bool &crossed) const;
 };
 
 }    // namespace LAMMPS_NS
