@@ -47,11 +47,8 @@ namespace {
 // exact under negation.
 inline void reference_bond(Domain *domain, double **x0, int i, int j, double xi[3])
 {
-  const double *half = domain->prd_half;
   for (int c = 0; c < 3; c++) xi[c] = x0[j][c] - x0[i][c];
-  // (minimum_image changes only a component longer than half the box)
-  if (fabs(xi[0]) > half[0] || fabs(xi[1]) > half[1] || fabs(xi[2]) > half[2])
-    PDCompat::minimum_image(domain, xi);
+  PDCompat::minimum_image(domain, xi);
 }
 
 // Which end stores a bond: the one from which its reference vector points

@@ -13,6 +13,7 @@
 #include "comm.h"
 #include "fix_pd_bonds.h"
 
+#include <algorithm>
 #include <cmath>
 #include <mpi.h>
 #include <utility>
@@ -58,7 +59,9 @@ std::vector<double> PairPD::type_medians(const double *q, const std::function<bo
     rank[t] = floor(0.5 * (count[t] + 1.0));
     lo[t] = std::nextafter(lo[t], -INFINITY);
   }
-  std::vector<double> mid(n), below(n);
+  // 'taken' keeps the values inside (lo, hi]; 'base' counts those <= lo
+  // (each pass then looks only at the values still in question)
+  std::vector<double> mid(n), below(n), base(n, 0.0);
   for (int step = 0; step < 100; step++) {
     bool open = false;
     for (int t = 0; t < n; t++) {
@@ -71,7 +74,16 @@ std::vector<double> PairPD::type_medians(const double *q, const std::function<bo
       if (tv.second <= mid[tv.first]) below[tv.first] += 1.0;
     MPI_Allreduce(MPI_IN_PLACE, below.data(), n, MPI_DOUBLE, MPI_SUM, world);
     for (int t = 0; t < n; t++)
-      if (count[t] > 0.0 && mid[t] > lo[t] && mid[t] < hi[t]) (below[t] >= rank[t] ? hi[t] : lo[t]) = mid[t];
+      if (count[t] > 0.0 && mid[t] > lo[t] && mid[t] < hi[t]) {
+        below[t] += base[t];
+        if (below[t] >= rank[t]) hi[t] = mid[t];
+        else lo[t] = mid[t], base[t] = below[t];
+      }
+    taken.erase(std::remove_if(taken.begin(), taken.end(),
+                               [&](const std::pair<int, double> &tv) {
+                                 return !(tv.second > lo[tv.first] && tv.second <= hi[tv.first]);
+                               }),
+                taken.end());
   }
   std::vector<double> median(n, INFINITY);
   for (const auto &tv : taken)

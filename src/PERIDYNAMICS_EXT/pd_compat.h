@@ -34,6 +34,7 @@
 #include "output.h"
 #include "pair.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -95,9 +96,15 @@ namespace PDCompat {
 #endif
   }
 
-  /* The shortest periodic image of a separation, in place. */
+  /* The shortest periodic image of a separation, in place. LAMMPS changes
+   * only a component longer than half the box (orthogonal and triclinic):
+   * a shorter one, most bonds, skips the call (per bond in the set-up's
+   * walks, where recent LAMMPS's call made a std::string of its file name
+   * each time). */
   inline void minimum_image(Domain *domain, double d[3])
   {
+    const double *half = domain->prd_half;
+    if (fabs(d[0]) <= half[0] && fabs(d[1]) <= half[1] && fabs(d[2]) <= half[2]) return;
 #ifdef PDEXT_MINIMUM_IMAGE_FLERR
     domain->minimum_image(FLERR, d[0], d[1], d[2]);
 #else
