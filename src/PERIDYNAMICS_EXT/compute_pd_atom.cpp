@@ -38,9 +38,7 @@ ComputePDAtom::ComputePDAtom(LAMMPS *lmp, int narg, char **arg) :
     const std::string name = arg[iarg];
     Output o = {name, FIELD, 0, -1, false};
     for (const PDField &f : known)
-      if (f.name == name) o.width = f.width, o.on_demand = (f.flags & PDField::ON_DEMAND) != 0;
-    // the pair style computes it on the steps LAMMPS has this compute due
-    if (o.on_demand) timeflag = 1;
+      if (f.name == name) o.width = f.width;
     if (name == "energy") {
       o.source = ENERGY;
       o.width = 1;
@@ -134,6 +132,10 @@ void ComputePDAtom::init()
       error->all(FLERR, "Compute pd/atom: field '{}' now has {} columns, {} when the compute was defined",
                  o.name, bonds->field_info(id).width, o.width);
     o.id = id;
+    // as the style declares it for this run; the pair style computes it on
+    // the steps LAMMPS has this compute due (its schedule, kept with timeflag)
+    o.on_demand = (bonds->field_info(id).flags & PDField::ON_DEMAND) != 0;
+    if (o.on_demand) timeflag = 1;
   }
 }
 

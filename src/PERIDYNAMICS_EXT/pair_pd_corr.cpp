@@ -197,7 +197,10 @@ std::vector<PDField> PairPDCorr::per_atom_fields() const
 {
   const int kept = PDField::OUTPUT | PDField::MIGRATE | PDField::RESTART;
   std::vector<PDField> f = {
-      {"deformation_gradient", 9, PDField::OUTPUT | (stabilization > 0.0 ? PDField::FORWARD : 0)},
+      // extended's F is an output (its strain needs G alone), but for the
+      // stabilization, which needs it every step
+      {"deformation_gradient", 9,
+       PDField::OUTPUT | (stabilization > 0.0 ? PDField::FORWARD : extended ? PDField::ON_DEMAND : 0)},
       {"stress", 6, PDField::OUTPUT | PDField::ON_DEMAND},
       {"corr_tensor", 9, PDField::FORWARD},
       // each step's sums, and the family's shape sums (scratch, summed from
@@ -312,6 +315,7 @@ pd_corr_state PairPDCorr::state(const Fields &f)
 {
   pd_corr_state st = {};
   st.extended = extended;
+  st.deformation = !extended || stabilization > 0.0;
   st.dim = dim();
   st.order = order;
   st.xi = bonds->history_data();
@@ -334,7 +338,7 @@ pd_corr_state PairPDCorr::state(const Fields &f)
 void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, const pd_corr_kinematics &kin,
                            bool with_stress, pd_tally &t)
 {
-  const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
+  const int width = pd_corr_sums_width(&st);
   double *eqps = f.eqps, *ep = f.plastic, *wp = f.work, *temp = f.temperature, *dmg = f.damage;
   pd_corr_history h = {};
   if (ep) {
@@ -360,7 +364,7 @@ void PairPDCorr::atom_step(int i, const pd_corr_state &st, const Fields &f, cons
                "or 'strain extended' with m <= 0 keeps matter from inverting",
                atom->tag[i], ti, MODEL_NAMES[model]);
   }
-  memcpy(f.defgrad + 9 * i, o.F, sizeof(o.F));
+  if (st.deformation) memcpy(f.defgrad + 9 * i, o.F, sizeof(o.F));
   if (with_stress) memcpy(f.stress + 6 * i, o.stress, sizeof(o.stress));
   memcpy(f.tensor + 9 * i, o.tensor, sizeof(o.tensor));
   if (ep) {
@@ -423,9 +427,14 @@ void PairPDCorr::compute(int eflag, int vflag)
   if (report_pending) report_setup();
 
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  const int width = extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
   const Fields f = fields();
   pd_corr_state st = state(f);
+  // outputs only, on the steps a compute pd/atom is due: the Cauchy stress
+  // (extended's takes an eigen solve per atom) and extended's F (9 of its
+  // 15 sums a bond; the stress needs it too)
+  const bool with_stress = demanded("stress");
+  if (!st.deformation) st.deformation = demanded("deformation_gradient") || with_stress;
+  const int width = pd_corr_sums_width(&st);
   // once an atom anywhere is past D_c, the damage of both ends decides
   // whether a bond counts: the same values in both passes (the owners' are
   // updated in between); before, no bond needs them (nor the ghosts' copies)
@@ -456,9 +465,7 @@ void PairPDCorr::compute(int eflag, int vflag)
   for (bigint k = 0; k < (bigint) nall * width; k++) f.sums[k] = 0.0;
   st.sum = f.sums;
   pd_corr_sums(&e.L, &st);
-  bonds->sum_to_owners(field_index("corr_sums"));
-  // the Cauchy stress is an output only (extended's takes an eigen solve per atom)
-  const bool with_stress = demanded("stress");
+  bonds->sum_to_owners(f.sums, width);
   // the atoms' kinematics a block at a time (their frames solved side by side)
   constexpr int BLOCK = 64;
   pd_corr_kinematics kin[BLOCK];

@@ -296,6 +296,45 @@ static void stress_left_out(const pd_corr_state *st, const corr_case *cc, const 
       memcmp(&o.energy, &with->energy, sizeof o.energy) != 0 || stress != 0.0;
 }
 
+/* Extended without a deformation gradient (an output): the step's sums
+ * are G alone, each one's bits those of G among all 15, and what the
+ * bonds need the same to the bit; counted over every atom corr_run steps
+ * with the extended strain. */
+static int strain_alone_atoms, strain_alone_differs;
+static void strain_alone(const pd_loop *L, pd_corr_state st, const corr_case *cc, const body *b,
+                         const double *sum, const double *shape)
+{
+  const int n = b->l.natoms, w = PD_CORR_SUMS_STRAIN;
+  st.deformation = 0;
+  double *g = calloc((size_t) w * n, sizeof(double));
+  st.sum = g;
+  pd_corr_sums(L, &st);
+  for (int a = b->nown; a < n; a++)
+    for (int c = 0; c < w; c++) g[b->owner[a] * w + c] += g[a * w + c];
+  pd_corr_kinematics *kin = malloc(sizeof(pd_corr_kinematics) * (size_t) b->nown);
+  pd_corr_kinematics_of(&st, b->nown, g, shape, kin);
+  for (int i = 0; i < b->nown; i++) {
+    pd_corr_kinematics all;
+    pd_corr_state full = st;
+    full.deformation = 1;
+    pd_corr_kinematics_of(&full, 1, sum + (size_t) i * PD_CORR_SUMS_EXTENDED, shape + (size_t) i * PD_CORR_SHAPE,
+                          &all);
+    pd_corr_history h1, h2;
+    pd_corr_atom_out o1, o2;
+    memset(&h1, 0, sizeof h1);
+    memset(&h2, 0, sizeof h2);
+    pd_corr_atom(&full, &cc->mat, sum + (size_t) i * PD_CORR_SUMS_EXTENDED, shape + (size_t) i * PD_CORR_SHAPE,
+                 &all, &h1, NULL, 0.0, 0.0, 0, &o1);
+    pd_corr_atom(&st, &cc->mat, g + (size_t) i * w, shape + (size_t) i * PD_CORR_SHAPE, kin + i, &h2, NULL, 0.0,
+                 0.0, 0, &o2);
+    strain_alone_atoms++;
+    strain_alone_differs += memcmp(g + (size_t) i * w, sum + (size_t) i * PD_CORR_SUMS_EXTENDED + 9, w * sizeof(double)) != 0 ||
+        memcmp(o1.tensor, o2.tensor, sizeof o1.tensor) != 0 || memcmp(&o1.energy, &o2.energy, sizeof o1.energy) != 0;
+  }
+  free(kin);
+  free(g);
+}
+
 /* What corr_run keeps of an owned atom (its 'sums' argument): its step
  * sums, then its shape (K^-1, M^-1). */
 enum { RECORD = PD_CORR_SUMS_EXTENDED + PD_CORR_SHAPE };
@@ -326,7 +365,7 @@ static double corr_run(const body *b, const corr_case *cc, const double *x, doub
   pd_bond_view v = lattice_view(l);
   pd_corr_state st;
   memset(&st, 0, sizeof st);
-  st.extended = cc->extended, st.dim = cc->dim, st.order = cc->order;
+  st.extended = cc->extended, st.deformation = 1, st.dim = cc->dim, st.order = cc->order;
   st.xi = xi, st.sum = ssum, st.tensor = tensor, st.defgrad = defgrad;
   st.stabilization = cc->stabilization, st.spring = &cc->spring, st.damage_max = 0.99;
   const pd_loop L = {&v, l->type, 1, x, l->vol, f, NULL, NULL, l->reaction, l->natoms, 0, NULL, 0};
@@ -338,6 +377,7 @@ static double corr_run(const body *b, const corr_case *cc, const double *x, doub
   pd_corr_sums(&L, &st);
   for (int g = b->nown; g < n; g++)
     for (int c = 0; c < width; c++) sum[b->owner[g] * width + c] += sum[g * width + c];
+  if (cc->extended) strain_alone(&L, st, cc, b, sum, shape);
   double energy = 0.0;
   pd_corr_kinematics *kin = malloc(sizeof(pd_corr_kinematics) * (size_t) b->nown);
   pd_corr_kinematics_of(&st, b->nown, sum, shape, kin);
@@ -1187,5 +1227,8 @@ int main(void)
   snprintf(what, sizeof what, "pd_corr_atom without the stress: F, tensor, energy to the bit, stress zero (%d atoms)",
            atoms_checked);
   check_true(what, atoms_checked > 1000 && stress_left_out_differs == 0);
+  snprintf(what, sizeof what, "extended without F: G alone, tensor and energy to the bit (%d atoms)",
+           strain_alone_atoms);
+  check_true(what, strain_alone_atoms > 1000 && strain_alone_differs == 0);
   return check_summary();
 }

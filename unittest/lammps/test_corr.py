@@ -664,25 +664,26 @@ check("J2: the balance error falls with dt at order > 1.5 (time integration, not
       order > 1.5, f"order {order:.2f}")
 
 # ----------------------------------------------------------------------
-# 7. The Cauchy stress on demand: pd/corr computes its 'stress' field (an
-# output; extended's takes an eigen solve per atom) only when a compute
-# pd/atom listing it is due, and at each run's start. The block of check 6
-# in motion, its mean stress in thermo every step and every 5 steps: the
-# rows of steps 5 and 10 agree to the bit (the stress of the step, not a
-# stale one: they moved from step 0's), for both strains.
-for strain in ("extended", "classical"):
+# 7. Outputs on demand: pd/corr computes its 'stress' field (extended's
+# takes an eigen solve per atom) and extended's 'deformation_gradient' (9
+# of its 15 sums a bond) only when a compute pd/atom listing them is due,
+# and at each run's start. The block of check 6 in motion, the field's
+# mean in thermo every step and every 5 steps: the rows of steps 5 and 10
+# agree to the bit (the values of the step, not stale ones: they moved
+# from step 0's), for both strains.
+for strain, field in (("extended", "stress"), ("classical", "stress"), ("extended", "deformation_gradient")):
     rows_by = {}
     for every in (1, 5):
         deck = BALANCE.replace("pair_style pd/corr model j2", f"pair_style pd/corr model j2 strain {strain}")
-        deck = deck.replace("thermo 400\nthermo_style custom step ke pe c_fr[1]\n", f"""compute s all pd/atom stress
+        deck = deck.replace("thermo 400\nthermo_style custom step ke pe c_fr[1]\n", f"""compute s all pd/atom {field}
 compute r all reduce ave c_s[1] c_s[2] c_s[4]
 thermo {every}
 thermo_style custom step c_r[1] c_r[2] c_r[3]
 """).replace("thermo_modify format float %.12g\nrun 400", "thermo_modify format float %.17g\nrun 10")
-        _, rows = run(deck, d, variables={"dt": 1e-8}, name=f"in.stress.{strain}.{every}")
+        _, rows = run(deck, d, variables={"dt": 1e-8}, name=f"in.{field}.{strain}.{every}")
         rows_by[every] = {int(r["Step"]): [r[f"c_r[{k}]"] for k in (1, 2, 3)] for r in rows}
     due = [rows_by[1].get(k) for k in (5, 10)]
-    check(f"{strain}: the stress of a due step (thermo every 5) is that of every-step thermo, to the bit",
+    check(f"{strain}: the {field} of a due step (thermo every 5) is that of every-step thermo, to the bit",
           due == [rows_by[5].get(k) for k in (5, 10)] and None not in due and due[0] != rows_by[1][0]
           and sorted(rows_by[5]) == [0, 5, 10],
           f"step 5: {rows_by[1].get(5)} / {rows_by[5].get(5)}; step 0: {rows_by[1].get(0)}")

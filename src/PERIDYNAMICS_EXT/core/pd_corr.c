@@ -73,21 +73,26 @@ counted_xi(const pd_corr_state *st, const pd_bond *bd, int damaged, double *t, i
   return st->xi + 3 * bd->idx;
 }
 
-/* The first pass's sums of one bond, the same at both ends. */
+/* The first pass's sums of one bond, the same at both ends: N (unless
+ * extended without 'deformation'), then extended's G. */
 PD_INLINE void
-bond_sums(void *s, const pd_bond *bd, double eps, double *t, int extended, int damaged)
+bond_sums(void *s, const pd_bond *bd, double eps, double *t, int extended, int deformation,
+          int damaged)
 {
   const pd_corr_state *st = (const pd_corr_state *) s;
-  const double *xi =
-      counted_xi(st, bd, damaged, t, extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL);
+  const int width = !extended ? PD_CORR_SUMS_CLASSICAL
+                              : deformation ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_STRAIN;
+  const double *xi = counted_xi(st, bd, damaged, t, width);
   if (!xi) return;
   const double w = bd->w;
-  for (int r = 0; r < 3; r++)
-    for (int c = 0; c < 3; c++) t[3 * r + c] = w * bd->d[r] * xi[c];
+  if (deformation)
+    for (int r = 0; r < 3; r++)
+      for (int c = 0; c < 3; c++) t[3 * r + c] = w * bd->d[r] * xi[c];
   if (!extended) return;
+  double *g = t + width - PD_CORR_SUMS_STRAIN;
   const double we = w * eps / (bd->r0 * bd->r0);
-  t[9] = we * xi[0] * xi[0], t[10] = we * xi[1] * xi[1], t[11] = we * xi[2] * xi[2];
-  t[12] = we * xi[0] * xi[1], t[13] = we * xi[0] * xi[2], t[14] = we * xi[1] * xi[2];
+  g[0] = we * xi[0] * xi[0], g[1] = we * xi[1] * xi[1], g[2] = we * xi[2] * xi[2];
+  g[3] = we * xi[0] * xi[1], g[4] = we * xi[0] * xi[2], g[5] = we * xi[1] * xi[2];
 }
 
 /* The shape sums of one bond, the same at both ends. */
@@ -251,11 +256,15 @@ PD_INLINE double strain_any(void *st, const pd_bond *bd)
   }                                                                                                \
   PD_INLINE void classical_sums_##name(void *st, const pd_bond *bd, double eps, double *t)     \
   {                                                                                                \
-    bond_sums(st, bd, eps, t, 0, DAMAGED);                                                         \
+    bond_sums(st, bd, eps, t, 0, 1, DAMAGED);                                                      \
   }                                                                                                \
   PD_INLINE void extended_sums_##name(void *st, const pd_bond *bd, double eps, double *t)      \
   {                                                                                                \
-    bond_sums(st, bd, eps, t, 1, DAMAGED);                                                         \
+    bond_sums(st, bd, eps, t, 1, 1, DAMAGED);                                                      \
+  }                                                                                                \
+  PD_INLINE void strain_sums_##name(void *st, const pd_bond *bd, double eps, double *t)        \
+  {                                                                                                \
+    bond_sums(st, bd, eps, t, 1, 0, DAMAGED);                                                      \
   }                                                                                                \
   PD_INLINE void classical_shape_##name(void *st, const pd_bond *bd, double eps, double *t)    \
   {                                                                                                \
@@ -294,23 +303,26 @@ void pd_corr_forces(const pd_loop *L, const pd_corr_state *st)
 #define SUMS_LATE(width, strain, value, failing) \
   pd_current_sums_late(L, st->sum, width, (void *) st, strain, value, failing)
 
+/* the four copies of one kind of sums: intact or damaged, without or with
+ * a failure law */
+#define SUMS_CASES(base, sums, width, strain, value)                          \
+  case base: sums(width, strain, value##_intact, 0); break;                   \
+  case base + 1: sums(width, strain, value##_intact, 1); break;               \
+  case base + 2: sums(width, strain, value##_damaged, 0); break;              \
+  case base + 3: sums(width, strain, value##_damaged, 1); break;
+
 void pd_corr_sums(const pd_loop *L, const pd_corr_state *st)
 {
   const int failing = L->fail != NULL, damaged = st->damage != NULL;
-  const int which = ((st->extended ? (st->order == 0.0 ? 1 : 2) : 0) * 2 + damaged) * 2 + failing;
-  switch (which) {
-  case 0: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_intact, 0); break;
-  case 1: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_intact, 1); break;
-  case 2: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_damaged, 0); break;
-  case 3: SUMS(PD_CORR_SUMS_CLASSICAL, stretch, classical_sums_damaged, 1); break;
-  case 4: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_intact, 0); break;
-  case 5: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_intact, 1); break;
-  case 6: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_damaged, 0); break;
-  case 7: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_log, extended_sums_damaged, 1); break;
-  case 8: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_intact, 0); break;
-  case 9: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_intact, 1); break;
-  case 10: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_damaged, 0); break;
-  default: SUMS_LATE(PD_CORR_SUMS_EXTENDED, strain_any, extended_sums_damaged, 1); break;
+  /* classical; extended log or any m, with N and G or G alone */
+  const int kind = !st->extended ? 0 : 1 + (st->order == 0.0 ? 0 : 1) + (st->deformation ? 0 : 2);
+  switch (kind * 4 + damaged * 2 + failing) {
+    SUMS_CASES(0, SUMS, PD_CORR_SUMS_CLASSICAL, stretch, classical_sums)
+    SUMS_CASES(4, SUMS_LATE, PD_CORR_SUMS_EXTENDED, strain_log, extended_sums)
+    SUMS_CASES(8, SUMS_LATE, PD_CORR_SUMS_EXTENDED, strain_any, extended_sums)
+    SUMS_CASES(12, SUMS_LATE, PD_CORR_SUMS_STRAIN, strain_log, strain_sums)
+    default:
+    SUMS_CASES(16, SUMS_LATE, PD_CORR_SUMS_STRAIN, strain_any, strain_sums)
   }
 }
 
@@ -364,7 +376,7 @@ void pd_corr_kinematics_of(const pd_corr_state *st, int n, const double *sums, c
                            pd_corr_kinematics *kin)
 {
   enum { CHUNK = 64 };
-  const int width = st->extended ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_CLASSICAL;
+  const int width = pd_corr_sums_width(st);
   double excess[6 * CHUNK], a[3 * CHUNK], q[9 * CHUNK];
   for (int k0 = 0; k0 < n; k0 += CHUNK) {
     const int m = n - k0 < CHUNK ? n - k0 : CHUNK;
@@ -374,7 +386,7 @@ void pd_corr_kinematics_of(const pd_corr_state *st, int n, const double *sums, c
       memset(o, 0, sizeof(*o));
       memset(excess + 6 * k, 0, 6 * sizeof(double));
       o->flat = Kinv[0] == 0.0 && Kinv[4] == 0.0;
-      if (o->flat) continue;
+      if (o->flat || (st->extended && !st->deformation)) continue;
       double N[9];
       memcpy(N, sum, sizeof(N));
       /* 2D: F_33 = 1 (plane strain kinematics; a plane stress law sets its
@@ -405,7 +417,7 @@ int pd_corr_atom(const pd_corr_state *st, const pd_corr_material *mat, const dou
   /* the strain of order m, classical from C's principal frame */
   double E[6], c[3], q[9];
   if (st->extended) {
-    pd_sym4_apply(M, sum + 9, E);
+    pd_sym4_apply(M, sum + pd_corr_sums_width(st) - PD_CORR_SUMS_STRAIN, E);
   } else {
     double e[3];
     for (int k = 0; k < 3; k++) {

@@ -54,9 +54,11 @@ enum {
 };
 extern const pd_coef pd_corr_coefs[PD_CORR_NCOEFS];
 
-/* The per-atom sums of each step's first pass: N = sum w Y (x) xi V (9);
- * extended adds G = sum w eps (n (x) n) V (6). */
-enum { PD_CORR_SUMS_CLASSICAL = 9, PD_CORR_SUMS_EXTENDED = 15 };
+/* The per-atom sums of each step's first pass: N = sum w Y (x) xi V (9),
+ * the deformation gradient's; extended adds G = sum w eps (n (x) n) V (6)
+ * after them. Extended's strain needs G alone: without a deformation
+ * gradient (pd_corr_state.deformation 0) its sums are G, 6 wide. */
+enum { PD_CORR_SUMS_CLASSICAL = 9, PD_CORR_SUMS_EXTENDED = 15, PD_CORR_SUMS_STRAIN = 6 };
 /* The sums of the family's shape, which change only when bonds stop
  * acting: K = sum w xi (x) xi V (6, symmetric); extended adds M (21). */
 enum { PD_CORR_SHAPE_SUMS_CLASSICAL = 6, PD_CORR_SHAPE_SUMS_EXTENDED = 27 };
@@ -66,6 +68,9 @@ enum { PD_CORR_SHAPE = 30 };
 
 typedef struct pd_corr_state {
   int extended;           /* 1: extended, 0: classical */
+  int deformation;        /* extended: 1 when the step's sums give F (an
+                             output, the stabilization); classical always
+                             has F (its strain) */
   int dim;                /* 2 or 3 */
   double order;           /* Seth-Hill order m of the strain */
   const double *xi;       /* per bond, laid out as the bonds: the reference
@@ -79,6 +84,13 @@ typedef struct pd_corr_state {
   const double *damage;   /* per atom, or NULL: no damage */
   double damage_max;      /* D_c */
 } pd_corr_state;
+
+/* The width of st's step sums per atom (their last 6 are extended's G). */
+static inline int pd_corr_sums_width(const pd_corr_state *st)
+{
+  if (!st->extended) return PD_CORR_SUMS_CLASSICAL;
+  return st->deformation ? PD_CORR_SUMS_EXTENDED : PD_CORR_SUMS_STRAIN;
+}
 
 /* Whether atom i's damage is beyond D_c: its bonds neither count in the
  * sums nor act (T14 eq. 7.2). st->damage must be set. */
@@ -101,8 +113,8 @@ void pd_corr_shape_sums(const pd_loop *L, const pd_corr_state *st);
 int pd_corr_shape(const pd_corr_state *st, const double *shape_sum, double *shape);
 
 /* Each step's first pass: the sums of every atom (owned + ghost; the caller
- * zeroes st->sum, width PD_CORR_SUMS_*, and sums the ghosts' share onto
- * owners). */
+ * zeroes st->sum, width pd_corr_sums_width, and sums the ghosts' share
+ * onto owners). */
 void pd_corr_sums(const pd_loop *L, const pd_corr_state *st);
 
 /* Second pass: forces, and with a tally the virial (the energy is per atom:
@@ -110,8 +122,9 @@ void pd_corr_sums(const pd_loop *L, const pd_corr_state *st);
 void pd_corr_forces(const pd_loop *L, const pd_corr_state *st);
 
 /* An atom's kinematics, before its law: the deformation gradient from its
- * sums and, classical, the principal frame of C = F^T F (C - 1 = Q diag(a)
- * Q^T: small strains keep their digits). */
+ * sums (zero for extended without st->deformation) and, classical, the
+ * principal frame of C = F^T F (C - 1 = Q diag(a) Q^T: small strains keep
+ * their digits). */
 typedef struct pd_corr_kinematics {
   int flat;           /* a flat family (its shape zero): no strain, no stress */
   double F[9];
@@ -128,7 +141,8 @@ void pd_corr_kinematics_of(const pd_corr_state *st, int n, const double *sums, c
  * with inc, an evaluation at the same strain repeats the increment, see
  * pd_corr_increment) and the tensor its bonds need. The Cauchy stress only
  * 'with_stress' (an output: the bonds need the tensor alone, and
- * extended's stress takes an eigen solve of E per atom). */
+ * extended's stress takes an eigen solve of E per atom; it needs F, so
+ * st->deformation). */
 typedef struct pd_corr_atom_out {
   double F[9];
   double tensor[9];   /* A = P K^-1 (classical) or Sigma = M^-1 : T (extended) */
