@@ -28,10 +28,10 @@ BLOCK_STEPS = 200
 # Every style of the block, in the order of one pass (bench/pairs/<style>.in)
 # (each effect next to its baseline, so that the two see about the same load)
 BLOCK_STYLES = [
-    "peri_pmb", "pd_bond", "pd_bond_fail_stretch", "pd_bond_contact", "pd_bond_thermo", "pd_bond_peratom", "pd_bond_timestep", "pd_bond_fragments", "pd_bond_no_directional", "pd_bond_microplastic",
+    "peri_pmb", "pd_bond", "pd_bond_fail_stretch", "pd_bond_contact", "pd_bond_thermo", "pd_bond_peratom", "pd_bond_stress", "pd_bond_timestep", "pd_bond_fragments", "pd_bond_no_directional", "pd_bond_microplastic",
     "pd_bond_legacy", "pd_bond_legacy_fail", "pd_bond_legacy_fail_alpha",
     "peri_lps", "pd_ordinary", "pd_ordinary_fail_stretch", "pd_ordinary_fail_energy",
-    "pd_ordinary_contact", "pd_ordinary_thermo", "pd_ordinary_peratom", "pd_ordinary_timestep", "pd_ordinary_no_directional", "pd_ordinary_m0", "pd_ordinary_m-1", "pd_ordinary_legacy",
+    "pd_ordinary_contact", "pd_ordinary_thermo", "pd_ordinary_peratom", "pd_ordinary_stress", "pd_ordinary_timestep", "pd_ordinary_no_directional", "pd_ordinary_m0", "pd_ordinary_m-1", "pd_ordinary_legacy",
     "pd_corr_classical", "pd_corr_j2", "pd_corr_jc", "pd_corr_extended",
 ]
 # The legacy styles have no bond count of their own in the log (PERI prints
@@ -61,6 +61,8 @@ EFFECTS = [
     ("energy and virial", "pd_ordinary_thermo", "pd_ordinary", 1.1),
     ("per-atom energy", "pd_bond_peratom", "pd_bond", 1.1),
     ("per-atom energy", "pd_ordinary_peratom", "pd_ordinary", 1.1),
+    ("per-atom virial", "pd_bond_stress", "pd_bond", 1.1),
+    ("per-atom virial", "pd_ordinary_stress", "pd_ordinary", 1.1),
     ("adaptive step", "pd_bond_timestep", "pd_bond", 1.1),
     ("adaptive step", "pd_ordinary_timestep", "pd_ordinary", 1.1),
     ("fragments", "pd_bond_fragments", "pd_bond", 1.02),

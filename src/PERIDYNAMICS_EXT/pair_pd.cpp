@@ -831,7 +831,10 @@ void PairPD::begin_evaluation(Evaluation &e)
   e.view = loop_view();
   e.tally = pd_tally{};
   e.tally.eatom = eflag_atom ? eatom : nullptr;
-  e.tally.skip_virial = !vflag_global;    // (per-atom virial is refused in tally())
+  e.tally.skip_virial = !vflag_global;
+  // (LAMMPS zeroes it over owned and ghost atoms; compute stress/atom adds
+  // the ghosts' onto their owners)
+  e.tally.vatom = vflag_atom && vatom ? vatom[0] : nullptr;
   e.fails = failing();
   e.fail = e.fails ? failure_state() : pd_failure{};
   // one type: the kernels load none
@@ -1072,9 +1075,6 @@ void PairPD::grow_work()
 
 void PairPD::tally(const pd_tally &t)
 {
-  if (vflag_atom)
-    error->all(FLERR, "Pair {} computes no per-atom virial (compute stress/atom); use the global "
-               "pressure", style_name());
   if (eflag_global) eng_vdwl += t.energy;
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += t.virial[k];

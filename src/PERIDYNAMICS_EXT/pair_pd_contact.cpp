@@ -331,7 +331,6 @@ void PairPDContact::tangent_sum(double *sum, double *closing, double reach) cons
 void PairPDContact::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  if (vflag_atom) error->all(FLERR, "Pair pd/contact computes no per-atom virial");
   if (neighbor->ago == 0 || neighbor->ncalls != cache_build) {
     filter_pairs();
     cache_build = neighbor->ncalls;
@@ -342,6 +341,8 @@ void PairPDContact::compute(int eflag, int vflag)
   const int *type = atom->type;
   pd_tally t = {};
   t.eatom = eflag_atom ? eatom : nullptr;
+  t.skip_virial = !vflag_global;
+  t.vatom = vflag_atom && vatom ? vatom[0] : nullptr;
   pd_tally *tp = evflag ? &t : nullptr;
   const pd_contact_cand *pairs = cache->pairs();
   const int npairs = cache->npairs();

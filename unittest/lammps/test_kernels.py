@@ -5,15 +5,23 @@ A row of bonds goes either through the vectorized first pass and the
 scalar scatter, or bond by bond: rows with a broken or breaking bond, and
 every row with the test hook PDEXT_BOND_BY_BOND=1 (the force loop's and
 the state-based sums' rows: pd/ordinary's dilatation, pd/corr's sums). Both must do the same
-arithmetic in the same order. Each case runs four times from the same
+arithmetic in the same order. Each case runs five times from the same
 start: bond by bond with the global energy, the pressure and the per-atom
 energy (compute pe/atom) on every step; the same in two passes (the
-tallies in the scalar one); the global tallies alone in two passes; and
-with thermo on the last step only. Positions, velocities and forces after
-60 steps, as text with 17 digits, must be identical, and so must the
-first three runs' energy and virial (compute pressure NULL virial: the
-pressure's kinetic part would hide it) at every step, and the sum of the
-per-atom energies of the first two. Bonds break (or, microplastic, yield)
+tallies in the scalar one); the global tallies alone in two passes; with
+thermo on the last step only; and with the per-atom virial (compute
+stress/atom, which takes each bond's tensor: bond by bond) on every step.
+Positions, velocities and forces after 60 steps, as text with 17 digits,
+must be identical, and so must the energy and virial (compute pressure
+NULL virial: the pressure's kinetic part would hide it) at every step of
+the runs tallied every step, and the sum of the per-atom energies of the
+first two. The per-atom virials must sum to the global virial times the
+box volume (negated: stress/atom is a stress times a volume) at every
+step, to round-off: 1e-8 of the largest component, as the global virial
+sums x (x) F over atoms whose positions are some 10^6 times their
+displacements (the random velocities' stresses are small: the two sums
+differ by up to 4e-10 of it). test_atom_stress.py checks each atom's
+value. Bonds break (or, microplastic, yield)
 during the runs (checked), so rows of both kinds meet; partial quadrature gives rows of more than one chunk (64
 bonds); two atom types and random velocities (0.6 m/s) make every bond
 different.
@@ -82,8 +90,10 @@ compute pa all pe/atom
 compute spa all reduce sum c_pa
 compute vir all pressure NULL virial
 compute frac all pd/fracture
+compute sa all stress/atom NULL virial
+compute ssa all reduce sum c_sa[1] c_sa[2] c_sa[3] c_sa[4] c_sa[5] c_sa[6]
 thermo {every}
-thermo_style custom step pe c_vir[1] c_vir[2] c_vir[3] c_vir[4] c_vir[5] c_vir[6] c_frac[1]{" c_spa" if per_atom else ""}
+thermo_style custom step vol pe c_vir[1] c_vir[2] c_vir[3] c_vir[4] c_vir[5] c_vir[6] c_frac[1]{EXTRA[per_atom]}
 thermo_modify format float %.17g
 run 60
 write_dump all custom dump.{tag} id x y z vx vy vz fx fy fz modify format float %.17g sort id
@@ -91,10 +101,14 @@ run 0
 """
 
 
-# (thermo every, per-atom energy, bond by bond): bond by bond, tallied
+# the per-atom output each run prints with thermo
+EXTRA = {None: "", "energy": " c_spa", "virial": "".join(f" c_ssa[{c}]" for c in range(1, 7))}
+
+# (thermo every, per-atom output, bond by bond): bond by bond, tallied
 # every step; chunked, the same; chunked, global tallies every step;
-# chunked, tallied at the end
-RUNS = [(1, True, True), (1, True, False), (1, False, False), (60, False, False)]
+# chunked, tallied at the end; chunked, per-atom virial every step
+RUNS = [(1, "energy", True), (1, "energy", False), (1, None, False), (60, None, False),
+        (1, "virial", False)]
 
 for name, pair in CASES.items():
     tag = re.sub(r"[^A-Za-z0-9]+", "_", name)
@@ -110,7 +124,10 @@ for name, pair in CASES.items():
         tallies.append([tuple(r[k] for k in ["PotEng"] + [f"c_vir[{c}]" for c in range(1, 7)])
                         for r in rows])
         dissipated.append(rows[-1]["c_frac[1]"])
-        per_atom_sums.append([r["c_spa"] for r in rows] if per_atom else None)
+        per_atom_sums.append([r["c_spa"] for r in rows] if per_atom == "energy" else None)
+        if per_atom == "virial":
+            atom_virial = [(r["Volume"], [r[f"c_vir[{c}]"] for c in range(1, 7)],
+                            [r[f"c_ssa[{c}]"] for c in range(1, 7)]) for r in rows]
     MPI_ENV.pop("PDEXT_BOND_BY_BOND")
     total = int(log_value(out, r"pd/bonds: (\d+) bonds kept"))
     if name in YIELDS:
@@ -125,12 +142,12 @@ for name, pair in CASES.items():
           f"{dissipated}")
     check(f"{name}: the same bonds broke in the four runs", len(set(broken)) == 1, f"{broken}")
     texts = [open(p).read() for p in dumps]
-    for r in (1, 2, 3):
+    for r in (1, 2, 3, 4):
         same = texts[0] == texts[r]
         check(f"{name}: positions, velocities and forces identical to the bit (run {r + 1} against "
               "bond by bond)", same,
               "" if same else f"max relative difference {max_rel_diff(read_dump(dumps[0]), read_dump(dumps[r])):.3g}")
-    for r in (1, 2):
+    for r in (1, 2, 4):
         check(f"{name}: energy and virial at each of the 61 steps identical to the bit (run {r + 1} "
               "against bond by bond)", len(tallies[0]) == 61 and tallies[0] == tallies[r],
               f"{len(tallies[0])} rows; first difference "
@@ -138,5 +155,10 @@ for name, pair in CASES.items():
     check(f"{name}: the per-atom energies' sum at each step identical to the bit, chunked and bond by bond",
           len(per_atom_sums[0]) == 61 and per_atom_sums[0] == per_atom_sums[1],
           f"first difference {next(((a, b) for a, b in zip(per_atom_sums[0], per_atom_sums[1]) if a != b), None)}")
+    # (the pressure is the virial over the volume: SI's pressure unit is 1)
+    worst = max(max(abs(a + v * g) for g, a in zip(glob, atoms)) / max(abs(v * g) for g in glob)
+                for v, glob, atoms in atom_virial)
+    check(f"{name}: the per-atom virials sum to the global virial at each of the 61 steps (1e-8)",
+          len(atom_virial) == 61 and worst < 1e-8, f"{len(atom_virial)} rows, worst relative difference {worst:.3g}")
 
 finish()

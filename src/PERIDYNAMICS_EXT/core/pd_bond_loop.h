@@ -228,8 +228,13 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
   *fi = pd_sum4_axpy4(*fi, vj, a);
   double *restrict rj = reaction + 4 * (ptrdiff_t) j;
   pd_sum4_store(rj, pd_sum4_axpy4(pd_sum4_load(rj), -vi, a));
-  /* (the loop takes the virial from the atoms' summed forces,
-   * pd_atom_virial) */
+  /* (the loop takes the global virial from the atoms' summed forces,
+   * pd_atom_virial; the per-atom one needs each bond's) */
+  if (tallied && tally->vatom) {
+    const double r[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
+    const double F[3] = {vi * vj * fij[0], vi * vj * fij[1], vi * vj * fij[2]};
+    pd_tally_atom_virial(tally->vatom, i, j, r, F);
+  }
   if (tallied && !in_lane)
     pd_tally_energy(&re->total[lane], &re->owner[lane], tally->eatom, j, vi, vj,
                     e * pd_energy_scale(escale, estride, i), e * pd_energy_scale(escale, estride, j));
@@ -447,7 +452,9 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int directed = kind == PD_MATERIAL_DIRECTED;
-  const int chunked = !bond_by_bond;
+  /* (a step that asks for the per-atom virial goes bond by bond: each
+   * bond's tensor onto both ends, pd_force_bond) */
+  const int chunked = !bond_by_bond && !(tallied && tally->vatom);
   double *restrict eatom = tallied ? tally->eatom : NULL;
   /* (a local: read through fail, it was loaded again after every
    * reaction store) */
@@ -474,7 +481,8 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
     const int trow = pd_row_begin(&bd, type, ntypes, i);
     const double xi[3] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
     double row_note = -INFINITY;    /* the largest of the row's notes */
-    pd_tally rt = {0.0, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, eatom, tallied ? tally->skip_virial : 1};
+    pd_tally rt = {0.0, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, eatom, tallied ? tally->skip_virial : 1,
+                   tallied ? tally->vatom : NULL};
     pd_row_energy re;
     memset(&re, 0, sizeof re);
     for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {

@@ -3,6 +3,8 @@
 #ifndef PD_BONDS_H
 #define PD_BONDS_H
 
+#include <stddef.h>
+
 /* PD_INLINE for the kernels (pd_ordinary.c, pd_bond_based.c), which include
  * this header through their own. */
 #include "pd_macros.h"
@@ -94,18 +96,44 @@ void pd_intact_volume(const pd_bond_view *b, const double *vol, double *m);
  * virial: sum of (x_i - x_j) (x) F_ij with F_ij = V_i V_j (force state),
  * a true force, so virial / box volume is a stress, as in PERI;
  * eatom: per-atom energy density over owned and ghost atoms, or NULL;
- * skip_virial: the step asks for energies alone (compute pe/atom), the
- * virial is left at zero. */
+ * skip_virial: the step asks for no global virial (compute pe/atom), it
+ * is left at zero;
+ * vatom: per-atom virial over owned and ghost atoms (6 each, xx yy zz xy
+ * xz yz: LAMMPS's), or NULL: each pair's (x_i - x_j) (x) F_ij, half to
+ * each end (pd_tally_atom_virial), so that the atoms' sum is the global
+ * virial and compute stress/atom / V_i is a stress. */
 typedef struct pd_tally {
   double energy;
   double virial[6];
   double *eatom;
   int skip_virial;
+  double *vatom;
 } pd_tally;
 
-/* Add a bond's virial, fpair being the force on i per unit (x_i - x_j). */
-static inline void pd_tally_virial(pd_tally *t, const double d[3], double fpair)
+/* A pair's (x_i - x_j) (x) F_ij, r = x_i - x_j and F the true force on i,
+ * half onto each end's per-atom virial. Symmetrized: a force not along
+ * the pair (pd/corr classical) has no symmetric tensor of its own, and
+ * the global virial takes the symmetric part too. */
+static inline void pd_tally_atom_virial(double *vatom, int i, int j, const double r[3],
+                                        const double F[3])
 {
+  const double w[6] = {0.5 * r[0] * F[0], 0.5 * r[1] * F[1], 0.5 * r[2] * F[2],
+                       0.25 * (r[0] * F[1] + r[1] * F[0]), 0.25 * (r[0] * F[2] + r[2] * F[0]),
+                       0.25 * (r[1] * F[2] + r[2] * F[1])};
+  for (int c = 0; c < 6; c++) {
+    vatom[6 * (ptrdiff_t) i + c] += w[c];
+    vatom[6 * (ptrdiff_t) j + c] += w[c];
+  }
+}
+
+/* Add a pair's virial, fpair being the force on i per unit d = x_i - x_j:
+ * the global one (unless skip_virial) and the per-atom one (when vatom). */
+static inline void pd_tally_virial(pd_tally *t, int i, int j, const double d[3], double fpair)
+{
+  if (t->vatom) {
+    const double F[3] = {d[0] * fpair, d[1] * fpair, d[2] * fpair};
+    pd_tally_atom_virial(t->vatom, i, j, d, F);
+  }
   if (t->skip_virial) return;
   t->virial[0] += d[0] * d[0] * fpair;
   t->virial[1] += d[1] * d[1] * fpair;

@@ -57,7 +57,7 @@ static inline int pd_contact_pair(double cs, double dist, double mu, double vi, 
       tally->eatom[j] += e * vi;
     }
     const double dij[3] = {-d[0], -d[1], -d[2]};
-    pd_tally_virial(tally, dij, -tl * vi * vj);
+    pd_tally_virial(tally, i, j, dij, -tl * vi * vj);
   }
   return 1;
 }
@@ -88,7 +88,7 @@ static inline void pd_contact_legacy_pair(double c, double delta, double dist, d
       tally->eatom[j] += 0.5 * e;
     }
     const double dij[3] = {-d[0], -d[1], -d[2]};
-    pd_tally_virial(tally, dij, -tl * vi);    /* PERI: fpair V_i, a true force */
+    pd_tally_virial(tally, i, j, dij, -tl * vi);    /* PERI: fpair V_i, a true force */
   }
 }
 
