@@ -163,6 +163,26 @@ set group all volume {VOLUME}
 """
 
 
+def two_blocks(b0=10):
+    """Two simple cubic blocks 5 spacings long in x (types and groups a
+    and b), b from x = b0 spacings on, periodic in y and z, shrink-wrapped
+    in x: the colliding bodies of the contact tests."""
+    return f"""units si
+boundary s p p
+atom_style peri
+atom_modify map array
+lattice sc {SPACING}
+region box block -1 17 0 8 0 8
+create_box 2 box
+region a block 0 5 INF INF INF INF
+region b block {b0} {b0 + 5} INF INF INF INF
+create_atoms 1 region a
+create_atoms 2 region b
+group a type 1
+group b type 2
+"""
+
+
 def plate(n, boundary="p p p"):
     """A 2D square-lattice plate, 1 mm thick (volume = spacing^2 x thickness)."""
     return f"""units si

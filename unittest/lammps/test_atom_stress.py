@@ -83,20 +83,7 @@ write_dump all custom free.dump id x y z c_sa[1] c_sa[2] c_sa[3] c_sa[4] c_sa[5]
     check_le(f"{style}, free block: stress/atom is the same at atoms mirrored through the centre "
              f"({len(atoms)} atoms)", worst, 1e-9, "each bond's tensor half to each end, whichever owns it")
 
-COLLIDE = f"""units si
-boundary s p p
-atom_style peri
-atom_modify map array
-lattice sc {SPACING}
-region box block -1 17 0 8 0 8
-create_box 2 box
-region a block 0 5 INF INF INF INF
-region b block 10 15 INF INF INF INF
-create_atoms 1 region a
-create_atoms 2 region b
-group a type 1
-group b type 2
-set group all density 1180
+COLLIDE = two_blocks() + f"""set group all density 1180
 set group all volume {VOLUME}
 pair_style hybrid/overlay pd/bond pd/contact
 pair_coeff * * pd/bond pmb E 3.5e9 horizon {HORIZON}

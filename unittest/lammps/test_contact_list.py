@@ -28,20 +28,7 @@ d = workdir()
 
 
 def blocks(pairs, steps, v=20.0, vy=0.0, timestep=2e-8, tag="x", extra="", b0=10, va=None):
-    return f"""units si
-boundary s p p
-atom_style peri
-atom_modify map array
-lattice sc {SPACING}
-region box block -1 17 0 8 0 8
-create_box 2 box
-region a block 0 5 INF INF INF INF
-region b block {b0} {b0 + 5} INF INF INF INF
-create_atoms 1 region a
-create_atoms 2 region b
-group a type 1
-group b type 2
-set group all density 2200
+    return two_blocks(b0) + f"""set group all density 2200
 set group all volume {VOLUME}
 {extra}{pairs}
 velocity a set {v if va is None else va} {vy} 0 units box
