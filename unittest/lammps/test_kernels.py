@@ -1,30 +1,30 @@
 """The bond loops' two ways give the same forces, energy and virial, to
 the bit.
 
-A row of bonds goes either through the vectorized first pass and the
-scalar scatter, or bond by bond: rows with a broken or breaking bond, and
-every row with the test hook PDEXT_BOND_BY_BOND=1 (the force loop's and
-the state-based sums' rows: pd/ordinary's dilatation, pd/corr's sums). Both must do the same
-arithmetic in the same order. Each case runs five times from the same
-start: bond by bond with the global energy, the pressure and the per-atom
-energy (compute pe/atom) on every step; the same in two passes (the
-tallies in the scalar one); the global tallies alone in two passes; with
-thermo on the last step only; and with the per-atom virial (compute
-stress/atom, which takes each bond's tensor: bond by bond) on every step.
-Positions, velocities and forces after 60 steps, as text with 17 digits,
-must be identical, and so must the energy and virial (compute pressure
-NULL virial: the pressure's kinetic part would hide it) at every step of
-the runs tallied every step, and the sum of the per-atom energies of the
-first two. The per-atom virials must sum to the global virial times the
-box volume (negated: stress/atom is a stress times a volume) at every
-step, to round-off: 1e-8 of the largest component, as the global virial
-sums x (x) F over atoms whose positions are some 10^6 times their
-displacements (the random velocities' stresses are small: the two sums
-differ by up to 4e-10 of it). test_atom_stress.py checks each atom's
-value. Bonds break (or, microplastic, yield)
-during the runs (checked), so rows of both kinds meet; partial quadrature gives rows of more than one chunk (64
-bonds); two atom types and random velocities (0.6 m/s) make every bond
-different.
+A row of bonds goes either through the vectorized first pass and the scalar
+scatter, or bond by bond: rows with a broken or breaking bond, and every
+row with the test hook PDEXT_BOND_BY_BOND=1 (the force loop's and the
+state-based sums' rows: pd/ordinary's dilatation, pd/corr's sums). Both
+must do the same arithmetic in the same order. Each case runs six times
+from the same start: bond by bond with the global energy, the pressure and
+the per-atom energy (compute pe/atom) on every step; the same in two passes
+(the tallies in the scalar one); the global tallies alone in two passes;
+with thermo on the last step only; and with the per-atom virial (compute
+stress/atom, each bond's tensor half to each end) on every step, chunked
+and bond by bond. Positions, velocities and forces after 60 steps, as text
+with 17 digits, must be identical, and so must the energy and virial
+(compute pressure NULL virial: the pressure's kinetic part would hide it)
+at every step of the runs tallied every step, and the sums of the per-atom
+energies and of the per-atom virials, chunked and bond by bond. The
+per-atom virials must sum to the global virial times the box volume
+(negated: stress/atom is a stress times a volume) at every step, to
+round-off: 1e-8 of the largest component, as the global virial sums x (x) F
+over atoms whose positions are some 10^6 times their displacements (the
+random velocities' stresses are small: the two sums differ by up to 4e-10
+of it). test_atom_stress.py checks each atom's value. Bonds break (or,
+microplastic, yield) during the runs (checked), so rows of both kinds meet;
+partial quadrature gives rows of more than one chunk (64 bonds); two atom
+types and random velocities (0.6 m/s) make every bond different.
 """
 from lmptest import *
 
@@ -106,13 +106,14 @@ EXTRA = {None: "", "energy": " c_spa", "virial": "".join(f" c_ssa[{c}]" for c in
 
 # (thermo every, per-atom output, bond by bond): bond by bond, tallied
 # every step; chunked, the same; chunked, global tallies every step;
-# chunked, tallied at the end; chunked, per-atom virial every step
+# chunked, tallied at the end; per-atom virial every step, chunked and
+# bond by bond
 RUNS = [(1, "energy", True), (1, "energy", False), (1, None, False), (60, None, False),
-        (1, "virial", False)]
+        (1, "virial", False), (1, "virial", True)]
 
 for name, pair in CASES.items():
     tag = re.sub(r"[^A-Za-z0-9]+", "_", name)
-    dumps, broken, tallies, per_atom_sums, dissipated = [], [], [], [], []
+    dumps, broken, tallies, per_atom_sums, dissipated, atom_virial_sums = [], [], [], [], [], []
     for every, per_atom, by_bond in RUNS:
         key = f"{tag}.{every}{'.atom' if per_atom else ''}{'.bond' if by_bond else ''}"
         MPI_ENV["PDEXT_BOND_BY_BOND"] = "1" if by_bond else "0"
@@ -126,6 +127,7 @@ for name, pair in CASES.items():
         dissipated.append(rows[-1]["c_frac[1]"])
         per_atom_sums.append([r["c_spa"] for r in rows] if per_atom == "energy" else None)
         if per_atom == "virial":
+            atom_virial_sums.append([[r[f"c_ssa[{c}]"] for c in range(1, 7)] for r in rows])
             atom_virial = [(r["Volume"], [r[f"c_vir[{c}]"] for c in range(1, 7)],
                             [r[f"c_ssa[{c}]"] for c in range(1, 7)]) for r in rows]
     MPI_ENV.pop("PDEXT_BOND_BY_BOND")
@@ -142,12 +144,12 @@ for name, pair in CASES.items():
           f"{dissipated}")
     check(f"{name}: the same bonds broke in the four runs", len(set(broken)) == 1, f"{broken}")
     texts = [open(p).read() for p in dumps]
-    for r in (1, 2, 3, 4):
+    for r in (1, 2, 3, 4, 5):
         same = texts[0] == texts[r]
         check(f"{name}: positions, velocities and forces identical to the bit (run {r + 1} against "
               "bond by bond)", same,
               "" if same else f"max relative difference {max_rel_diff(read_dump(dumps[0]), read_dump(dumps[r])):.3g}")
-    for r in (1, 2, 4):
+    for r in (1, 2, 4, 5):
         check(f"{name}: energy and virial at each of the 61 steps identical to the bit (run {r + 1} "
               "against bond by bond)", len(tallies[0]) == 61 and tallies[0] == tallies[r],
               f"{len(tallies[0])} rows; first difference "
@@ -155,6 +157,9 @@ for name, pair in CASES.items():
     check(f"{name}: the per-atom energies' sum at each step identical to the bit, chunked and bond by bond",
           len(per_atom_sums[0]) == 61 and per_atom_sums[0] == per_atom_sums[1],
           f"first difference {next(((a, b) for a, b in zip(per_atom_sums[0], per_atom_sums[1]) if a != b), None)}")
+    check(f"{name}: the per-atom virials' sums at each step identical to the bit, chunked and bond by bond",
+          len(atom_virial_sums[0]) == 61 and atom_virial_sums[0] == atom_virial_sums[1],
+          f"first difference {next(((a, b) for a, b in zip(*atom_virial_sums) if a != b), None)}")
     # (the pressure is the virial over the volume: SI's pressure unit is 1)
     worst = max(max(abs(a + v * g) for g, a in zip(glob, atoms)) / max(abs(v * g) for g in glob)
                 for v, glob, atoms in atom_virial)

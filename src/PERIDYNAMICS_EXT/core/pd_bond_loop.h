@@ -232,8 +232,9 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
    * pd_atom_virial; the per-atom one needs each bond's) */
   if (tallied && tally->vatom) {
     const double r[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
-    const double F[3] = {vi * vj * fij[0], vi * vj * fij[1], vi * vj * fij[2]};
-    pd_tally_atom_virial(tally->vatom, i, j, r, F);
+    const double vv = vi * vj;
+    const double F[3] = {vv * fij[0], vv * fij[1], vv * fij[2]};
+    pd_tally_atom_virial(tally->vatom, tally->own_virial, j, r, F);
   }
   if (tallied && !in_lane)
     pd_tally_energy(&re->total[lane], &re->owner[lane], tally->eatom, j, vi, vj,
@@ -426,6 +427,28 @@ pd_scatter_chunk(pd_sum4 fi[2], const int *restrict far, const double *restrict 
   for (int c = 0; noting && c < 4; c++) pd_note_max(row_note, pd_sum4_lane(rn, c));
 }
 
+/* The per-atom virial of a chunk's m bonds (their forces per V_i V_j in
+ * g, pd_force_bonds), as pd_force_bond tallies an intact bond's, to the
+ * same numbers: the far ends' shares onto vatom, the owner's onto the
+ * row's own_virial (in registers here: in memory, each bond's adds
+ * waited on the previous bond's stores). */
+PD_INLINE void pd_chunk_atom_virial(double *restrict vatom, double *restrict own_virial,
+                                    const int *restrict far, const double *restrict g,
+                                    const double *restrict x, const double xi[3],
+                                    const double *restrict vol, double vi, int m)
+{
+  double own[6];
+  for (int c = 0; c < 6; c++) own[c] = own_virial[c];
+  for (int k = 0; k < m; k++) {
+    const int j = far[k];
+    const double r[3] = {xi[0] - x[3 * j], xi[1] - x[3 * j + 1], xi[2] - x[3 * j + 2]};
+    const double vv = vi * vol[j];
+    const double F[3] = {vv * g[k], vv * g[PD_CHUNK + k], vv * g[2 * PD_CHUNK + k]};
+    pd_tally_atom_virial(vatom, own, j, r, F);
+  }
+  for (int c = 0; c < 6; c++) own_virial[c] = own[c];
+}
+
 /* Walks every bond once. Directed materials (and every material when
  * bond_by_bond) go bond by bond (pd_force_bond); the others take each row
  * in chunks: the vectorized first pass, then the scalar sums onto i and
@@ -452,9 +475,8 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
 {
   pd_break_sums sums = {0.0, 0.0, 0};
   const int directed = kind == PD_MATERIAL_DIRECTED;
-  /* (a step that asks for the per-atom virial goes bond by bond: each
-   * bond's tensor onto both ends, pd_force_bond) */
-  const int chunked = !bond_by_bond && !(tallied && tally->vatom);
+  const int chunked = !bond_by_bond;
+  double *restrict vatom = tallied ? tally->vatom : NULL;
   double *restrict eatom = tallied ? tally->eatom : NULL;
   /* (a local: read through fail, it was loaded again after every
    * reaction store) */
@@ -482,7 +504,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
     const double xi[3] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
     double row_note = -INFINITY;    /* the largest of the row's notes */
     pd_tally rt = {0.0, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, eatom, tallied ? tally->skip_virial : 1,
-                   tallied ? tally->vatom : NULL};
+                   vatom, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
     pd_row_energy re;
     memset(&re, 0, sizeof re);
     for (int k0 = 0; k0 < n; k0 += PD_CHUNK) {
@@ -505,6 +527,7 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
         else
           pd_scatter_chunk(fi, b->far + row + k0, g, vol, vi, reaction, &row_note, m, 0, 0, 0);
         const int *restrict far = b->far + row + k0;
+        if (vatom) pd_chunk_atom_virial(vatom, rt.own_virial, far, g, x, xi, vol, vi, m);
         /* as pd_force_bond tallies an intact bond, bond after bond (its
          * arithmetic written again here: through shared helpers this
          * pass ran 6% slower on tallied steps), onto copies of the row's
@@ -544,12 +567,14 @@ pd_force_loop_on(const pd_bond_view *restrict b, const int *restrict type, int n
       tally->energy += in_lane ? own : pd_lanes_sum(re.total);
       for (int c = 0; c < 6; c++) tally->virial[c] += rt.virial[c];
       if (eatom) eatom[i] += own;
+      for (int c = 0; vatom && c < 6; c++) vatom[6 * (ptrdiff_t) i + c] += rt.own_virial[c];
     }
     if (ends) pd_note_max(reaction + 4 * (ptrdiff_t) i + 3, row_note);
     else if (noting) pd_note_max(&largest, row_note);
   }
   double far_energy[PD_ENERGY_LANES] = {0.0, 0.0, 0.0, 0.0};    /* (in_lane: atom a's onto lane a % 4) */
-  pd_tally far_virial = {0.0, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, NULL, tallied ? tally->skip_virial : 1};
+  pd_tally far_virial = {0.0, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, NULL, tallied ? tally->skip_virial : 1,
+                         NULL, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
   for (int a = 0; a < nall; a++) {
     for (int c = 0; c < 3; c++) f[3 * a + c] += reaction[4 * a + c];
     if (tallied) pd_atom_virial(&far_virial, x + 3 * a, reaction + 4 * a, vol[a], directed);

@@ -101,27 +101,31 @@ void pd_intact_volume(const pd_bond_view *b, const double *vol, double *m);
  * vatom: per-atom virial over owned and ghost atoms (6 each, xx yy zz xy
  * xz yz: LAMMPS's), or NULL: each pair's (x_i - x_j) (x) F_ij, half to
  * each end (pd_tally_atom_virial), so that the atoms' sum is the global
- * virial and compute stress/atom / V_i is a stress. */
+ * virial and compute stress/atom / V_i is a stress;
+ * own_virial: a bond loop's row tally keeps its owner's share there, added
+ * to vatom at the row's end (pd_bond_loop.h). */
 typedef struct pd_tally {
   double energy;
   double virial[6];
   double *eatom;
   int skip_virial;
   double *vatom;
+  double own_virial[6];
 } pd_tally;
 
 /* A pair's (x_i - x_j) (x) F_ij, r = x_i - x_j and F the true force on i,
- * half onto each end's per-atom virial. Symmetrized: a force not along
- * the pair (pd/corr classical) has no symmetric tensor of its own, and
- * the global virial takes the symmetric part too. */
-static inline void pd_tally_atom_virial(double *vatom, int i, int j, const double r[3],
-                                        const double F[3])
+ * half onto each end's per-atom virial: i's share onto own (6), j's onto
+ * vatom. Symmetrized: a force not along the pair (pd/corr classical) has
+ * no symmetric tensor of its own, and the global virial takes the
+ * symmetric part too. */
+static inline void pd_tally_atom_virial(double *vatom, double *own, int j,
+                                        const double r[3], const double F[3])
 {
   const double w[6] = {0.5 * r[0] * F[0], 0.5 * r[1] * F[1], 0.5 * r[2] * F[2],
                        0.25 * (r[0] * F[1] + r[1] * F[0]), 0.25 * (r[0] * F[2] + r[2] * F[0]),
                        0.25 * (r[1] * F[2] + r[2] * F[1])};
   for (int c = 0; c < 6; c++) {
-    vatom[6 * (ptrdiff_t) i + c] += w[c];
+    own[c] += w[c];
     vatom[6 * (ptrdiff_t) j + c] += w[c];
   }
 }
@@ -132,7 +136,7 @@ static inline void pd_tally_virial(pd_tally *t, int i, int j, const double d[3],
 {
   if (t->vatom) {
     const double F[3] = {d[0] * fpair, d[1] * fpair, d[2] * fpair};
-    pd_tally_atom_virial(t->vatom, i, j, d, F);
+    pd_tally_atom_virial(t->vatom, t->vatom + 6 * (ptrdiff_t) i, j, d, F);
   }
   if (t->skip_virial) return;
   t->virial[0] += d[0] * d[0] * fpair;
