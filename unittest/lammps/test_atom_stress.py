@@ -69,8 +69,11 @@ variable uy atom y*{STRAIN[1]!r}
 variable uz atom z*{STRAIN[2]!r}
 displace_atoms all move v_ux v_uy v_uz units box
 compute sa all stress/atom NULL virial
+# (a dump of the run, not write_dump after it: LAMMPS 6 Jan 2022 refuses a
+# compute that no run invoked)
+dump free all custom 1 free.dump id x y z c_sa[1] c_sa[2] c_sa[3] c_sa[4] c_sa[5] c_sa[6]
+dump_modify free format float %.17g
 run 0
-write_dump all custom free.dump id x y z c_sa[1] c_sa[2] c_sa[3] c_sa[4] c_sa[5] c_sa[6] modify format float %.17g
 """
     run(script, d)
     atoms = list(read_dump(f"{d}/free.dump").values())
