@@ -15,4 +15,12 @@
 #define PD_INLINE static inline
 #endif
 
+/* A kernel's rarely taken branch kept out of line, so that it costs the
+ * kernel's hot loop no registers. */
+#if defined(__GNUC__) || defined(__clang__)
+#define PD_NOINLINE static __attribute__((noinline, unused))
+#else
+#define PD_NOINLINE static
+#endif
+
 #endif
