@@ -11,6 +11,12 @@ the strain to 1e-6 of it. A per-atom virial off by its sign, by half, or
 missing the ghosts' shares that compute stress/atom brings home from the
 neighbouring rank fails.
 
+The same strain of a free block (its surfaces make the atoms differ):
+atoms at places mirrored through its centre must carry the same
+stress/atom to 1e-9 (the displacements are 1e-6 of the positions, whose
+round-off is 1e-16 of them), whichever end of a bond its half list made
+the bond's owner: every tensor put onto the owner fails by 0.6.
+
 Contact: two blocks collide (pd/contact with pd/bond, hybrid/overlay,
 1 and 2 ranks); while their faces touch, the per-atom virials of both
 styles sum to the global virial times the volume (negated: stress/atom is
