@@ -15,8 +15,8 @@
 #define PD_INLINE static inline
 #endif
 
-/* A kernel's rarely taken branch kept out of line, so that it costs the
- * kernel's hot loop no registers. */
+/* A kernel's rarely taken branch kept out of line: the kernel carries a
+ * call, not a copy of its loop. */
 #if defined(__GNUC__) || defined(__clang__)
 #define PD_NOINLINE static __attribute__((noinline, unused))
 #else
