@@ -1,5 +1,6 @@
 /* ----------------------------------------------------------------------
-   PERIDYNAMICS_EXT: 'fail energy [Gc <Gc>]', energy-based failure of a
+   PERIDYNAMICS_EXT: 'fail energy [Gc <Gc>] [profile uniform|opening]',
+   energy-based failure of a
    state-based material (T14 eq. 6.1-6.5; the bond test and the calibration:
    core/pd_law_energy.{h,c}).
 ------------------------------------------------------------------------- */
@@ -15,6 +16,7 @@
 #include "pair_pd.h"
 
 #include <cmath>
+#include <cstring>
 
 extern "C" {
 #include "pd_law_energy.h"
@@ -25,19 +27,24 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-enum { GC };
+enum { GC, PROFILE };
 const pd_coef COEFS[] = {
     // bonds between two types without their own: the mean (none if a type has none)
     {"Gc", "fracture energy", PD_MIX_MEAN, PD_COEF_PAIR | PD_COEF_FILE, PD_CHECK_POSITIVE, 0.0, 0.0, 0.0,
      nullptr},
+    // the bond-failure-energy profile (pd_energy_profile), written as a
+    // word; one for all type pairs, T14's opening one where none is given
+    {"profile", "bond-failure-energy profile", PD_MIX_MEAN, PD_COEF_PAIR, PD_CHECK_RANGE, PD_PROFILE_UNIFORM,
+     PD_PROFILE_OPENING, 0.0, nullptr},
 };
+const char *const PROFILES[] = {"uniform", "opening"};    // by pd_energy_profile
 
 class LawEnergy : public PDFailureLaw {
  public:
-  LawEnergy(PairPD *pair, pd_fail_law id) : PDFailureLaw(pair, id, "energy", COEFS, 1) {}
+  LawEnergy(PairPD *pair, pd_fail_law id) : PDFailureLaw(pair, id, "energy", COEFS, 2) {}
   ~LawEnergy() override { memory->destroy(crit); }
 
-  std::string usage() const override { return "fail energy [Gc <Gc>]"; }
+  std::string usage() const override { return "fail energy [Gc <Gc>] [profile opening|uniform]"; }
 
   std::string unsupported() const override
   {
@@ -49,7 +56,20 @@ class LawEnergy : public PDFailureLaw {
 
   int parse(PDCoefLine &line, int narg, char **arg, int iarg) override
   {
-    return take_keyword(line, GC, narg, arg, iarg);
+    for (int next = iarg;; iarg = next) {
+      next = take_keyword(line, GC, narg, arg, iarg);
+      if (next == iarg && iarg < narg && strcmp(arg[iarg], "profile") == 0) {
+        const char *word = iarg + 1 < narg ? arg[iarg + 1] : "(nothing)";
+        int k = 0;
+        while (k < 2 && strcmp(word, PROFILES[k]) != 0) k++;
+        if (k == 2)
+          error->all(FLERR, "Pair {} coeff: 'fail energy profile {}': expected 'opening' or 'uniform'", style(),
+                     word);
+        take(line, PROFILE, k == PD_PROFILE_OPENING ? "1" : "0");
+        next = iarg + 2;
+      }
+      if (next == iarg) return iarg;
+    }
   }
 
   void check(int i, int j) override
@@ -76,22 +96,27 @@ class LawEnergy : public PDFailureLaw {
     const PDBondEnergies *m = pair->bond_energies();
     const int ntypes = atom->ntypes, n = ntypes + 1;
     gc.assign(n * n, INFINITY);
-    bool fails = false;
+    int first = 0;    // the first failing pair (ti * n + tj), whose profile all share
     for (int ti = 1; ti <= ntypes; ti++)
       for (int tj = 1; tj <= ntypes; tj++)
         if (&law_of(ti, tj) == this && std::isfinite(value(GC, ti, tj))) {
           gc[ti * n + tj] = value(GC, ti, tj);
-          fails = true;
+          const int p = profile_of(ti, tj);
+          if (!first) first = ti * n + tj, profile = p < 0 ? PD_PROFILE_OPENING : (pd_energy_profile) p;
+          if (p != profile)
+            error->all(FLERR, "Pair {}: 'fail energy' takes one profile for all type pairs: {} {} has {}, {} {} "
+                       "has {} (where a line names none: opening)", style(), ti, tj,
+                       p < 0 ? "two (its types differ)" : PROFILES[p], first / n, first % n, PROFILES[profile]);
         }
     // the continuum integral must exist (T14 eq. 6.1-6.2) ...
-    if (fails && dim() == 2 && pd_influence_singular(m->influence_kind()))
-      error->all(FLERR, "Pair {}: 'fail energy' with influence {} in 2D: the G_c integral diverges "
-                 "(T14 eq. 6.2); use influence constant or tupek", style(),
+    if (first && profile == PD_PROFILE_OPENING && dim() == 2 && pd_influence_singular(m->influence_kind()))
+      error->all(FLERR, "Pair {}: 'fail energy profile opening' with influence {} in 2D: the G_c integral "
+                 "diverges (T14 eq. 6.2); use influence constant or tupek, or profile uniform", style(),
                  pd_influence_name(m->influence_kind()));
     // ... and beta is calibrated on each atom's family: its moment
-    // sum w V / |xi| and weighted volume, calibrated as the material's
+    // sum w V |xi|^(q+1) and weighted volume, calibrated as the material's
     // (core/pd_calibration.h)
-    std::vector<double> sum = pair->family_moments(-1);
+    std::vector<double> sum = pair->family_moments(pd_energy_profile_power(profile) + 1);
     const std::vector<double> moment = pair->calibrate(sum.data());
     double *b = field(BETA);
     for (int i = 0; i < atom->nlocal; i++)
@@ -119,7 +144,8 @@ class LawEnergy : public PDFailureLaw {
     const double *b = field(BETA);
     for (int i = 0; i < atom->nlocal; i++) crit[i] = b[i] * m->family_norm(i);
     if (neighbor->ago == 0) bonds()->copy_to_ghosts(crit);
-    params = {crit, pd_failure_floor(crit, atom->nlocal + atom->nghost), gc.data()};
+    params = {crit, pd_failure_floor(crit, atom->nlocal + atom->nghost), gc.data(), 0.0, 0.0};
+    pd_law_energy_profile(&params, profile);
     return &params;
   }
 
@@ -127,7 +153,8 @@ class LawEnergy : public PDFailureLaw {
   int release_kind(int t) const override
   {
     const int n = atom->ntypes + 1;
-    return std::isfinite(gc[t * n + t]) ? PD_RELEASE_ENERGY_LAW : -1;
+    if (!std::isfinite(gc[t * n + t])) return -1;
+    return profile == PD_PROFILE_OPENING ? PD_RELEASE_ENERGY_OPENING : PD_RELEASE_ENERGY_UNIFORM;
   }
 
   void report() const override
@@ -138,9 +165,9 @@ class LawEnergy : public PDFailureLaw {
     for (int t = 1; t < n; t++)
       if (std::isfinite(gc[t * n + t]))
         types += fmt::format(" type {} beta {:.4g} (continuum {:.4g});", t, beta[t] * gc[t * n + t],
-                             pd_energy_failure_beta(m->influence_kind(), dim(), pair->horizon(t, t),
+                             pd_energy_failure_beta(m->influence_kind(), profile, dim(), pair->horizon(t, t),
                                                     gc[t * n + t]));
-    utils::logmesg(lmp, "{}: fail energy:{}\n", style(), types);
+    utils::logmesg(lmp, "{}: fail energy, profile {}:{}\n", style(), PROFILES[profile], types);
   }
 
  private:
@@ -150,6 +177,17 @@ class LawEnergy : public PDFailureLaw {
   double *crit = nullptr;      // per atom beta N for G_c = 1 (owned + ghost)
   int ncrit = 0;
   pd_law_energy params;
+  pd_energy_profile profile = PD_PROFILE_OPENING;    // of every failing type pair
+
+  // a type pair's profile: given, or its types' mean (mix), or the
+  // opening one; types of two profiles mix to neither
+  int profile_of(int i, int j)
+  {
+    const double v = value(PROFILE, i, j);
+    return std::isnan(v) || v == PD_PROFILE_OPENING ? PD_PROFILE_OPENING
+           : v == PD_PROFILE_UNIFORM                ? PD_PROFILE_UNIFORM
+                                                    : -1;
+  }
 };
 
 }    // namespace

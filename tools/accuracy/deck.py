@@ -140,6 +140,17 @@ def model(setting):
 DIRECTIONAL_STYLES = ("pd/bond", "pd/ordinary")
 
 
+def profile_words(setting):
+    """' profile <name>' where a case names the energy law's profile, else ''."""
+    return f" profile {setting['profile']}" if setting.get("profile") else ""
+
+
+def fail_words(setting, gc):
+    """The 'fail ...' words of a case with a failure law ('law', and for
+    the energy law an optional 'profile'), G_c given as gc."""
+    return f"fail {setting['law']} Gc {gc}" + profile_words(setting)
+
+
 def pair_lines(setting, h, fail="", mat="PMMA"):
     """pair_style and pair_coeff lines; fail = '' or e.g. 'fail energy Gc 400'."""
     p = material(mat)
@@ -245,7 +256,7 @@ LATTICE_LINE = {"sc": "lattice sc ${a}", "square": "lattice sq ${a}", "sq": "lat
 def user_lines(s):
     """The deck lines of a setting dict (the keys of the accuracy cases:
     style, lattice, plane, influence, strain, quadrature, directional, recontact,
-    ratio, m or order, law, spacing or h, dt_fraction; timestep, note:
+    ratio, m or order, law, profile, spacing or h, dt_fraction; timestep, note:
     a comment line)."""
     lines = []
     a = s.get("spacing", s.get("h"))
@@ -276,7 +287,7 @@ def user_lines(s):
     if m is not None and style != "pd/bond":
         coeff += f" m {m:g}"
     if s.get("law"):
-        coeff += f" fail {s['law']} Gc ${{Gc}}"
+        coeff += " " + fail_words(s, "${Gc}")
     lines.append(coeff)
     if s.get("dt_fraction") is not None:
         lines.append(f"fix dt all pd/timestep safety {s['dt_fraction']:g}")

@@ -34,19 +34,21 @@ def cases(mode):
     lats = ["square"] if mode == "short" else ["square", "hex"]
     out = []
     for lattice in lats:
-        for style, law in (("pd/ordinary", "energy"), ("pd/bond", "stretch")):
+        for style, law, profile in (("pd/ordinary", "energy", None), ("pd/ordinary", "energy", "uniform"),
+                                    ("pd/bond", "stretch", None)):
             for ratio in ratios:
-                out.append({"style": style, "law": law, "lattice": lattice, "ratio": ratio, "h": 5e-4, "dt_frac": 1.0})
+                c = {"style": style, "law": law, "lattice": lattice, "ratio": ratio, "h": 5e-4, "dt_frac": 1.0}
+                out.append(dict(c, profile=profile) if profile else c)
     if mode == "full":
         # the time step converged (half of it moves no ratio by more than
         # 2%): halved on the square lattice only; half the spacing too
-        sq3 = [c for c in out if c["ratio"] == 3 and c["lattice"] == "square"]
+        sq3 = [c for c in out if c["ratio"] == 3 and c["lattice"] == "square" and "profile" not in c]
         out += [dict(c, dt_frac=0.5) for c in sq3] + [dict(c, h=2.5e-4) for c in sq3]
     return out
 
 
 def family(case):
-    f = " ".join(str(case[k]) for k in ("style", "law", "lattice"))
+    f = " ".join(str(case[k]) for k in ("style", "law", "lattice")) + deck.profile_words(case)
     return f + f" h {case['h'] * 1e3:g} mm" + (f" dt x{case['dt_frac']:g}" if case["dt_frac"] != 1.0 else "")
 
 
@@ -71,7 +73,7 @@ def strip(case, turned):
     text += (f"region box block 0 {L!r} 0 {HS!r} {-0.5 * h!r} {0.5 * h!r} units box\n"
              "create_box 1 box\ncreate_atoms 1 box\n")
     text += f"set group all density {mat['density']}\nset group all volume {deck.volume(lattice, h)!r}\n"
-    text += deck.pair_lines(case, h, fail=f"fail {case['law']} Gc {gc}")
+    text += deck.pair_lines(case, h, fail=deck.fail_words(case, gc))
     strain = math.sqrt(2 * G_LOAD * gc / (E / (1 - nu ** 2) * HS))
     # the pre-crack on the mid-line: between two rows of the unturned
     # lattices (rows at multiples of the row spacing from y = 0)

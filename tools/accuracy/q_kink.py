@@ -113,14 +113,17 @@ def criterion(case):
 
 
 def cases(mode):
-    """smoke: pure mode II, pd/ordinary energy, a/h = 25 (a few seconds); short:
+    """smoke: pure mode II, pd/ordinary energy, a/h = 25 and 50 (the
+    recommendation takes two resolutions; about 10 s); short:
     pure mode II, square lattice, 3 spacings at a/h = 25 and 50 and 4
     spacings at a/h = 50, pd/ordinary energy and pd/bond stretch (about
     40 s); full: also a/h = 100 at 3 and 4 spacings, 200 at 4, K_II/K_I =
     1 at 4 spacings and a/h = 50, and, at a/h = 25, hex, three jittered
-    plates and K_II/K_I = 1 (about 11 minutes)."""
+    plates and K_II/K_I = 1, and the energy law's uniform profile at 4
+    spacings, a/h = 100 and 200 (about 14 minutes)."""
     if mode == "smoke":
-        return [{"style": "pd/ordinary", "law": "energy", "lattice": "square", "ratio": 3, "n": 25, "mix": "II"}]
+        return [{"style": "pd/ordinary", "law": "energy", "lattice": "square", "ratio": 3, "n": n, "mix": "II"}
+                for n in (25, 50)]
     out = []
     laws = (("pd/ordinary", "energy"), ("pd/bond", "stretch"))
     for style, law in laws:
@@ -140,6 +143,9 @@ def cases(mode):
                 out.append({"style": style, "law": law, "lattice": "square-jitter", "ratio": 3, "n": 25, "mix": "II",
                             "seed": seed})
             out.append({"style": style, "law": law, "lattice": "square", "ratio": 3, "n": 25, "mix": 1.0})
+        for n in (100, 200):
+            out.append({"style": "pd/ordinary", "law": "energy", "profile": "uniform", "lattice": "square", "ratio": 4,
+                        "n": n, "mix": "II"})
     return out
 
 
@@ -152,13 +158,40 @@ def group(case):
 
 
 def family(case):
-    return f"{case['style']} {case['law']} {case['lattice']} a/h {case['n']}" + \
+    return f"{case['style']} {case['law']}{deck.profile_words(case)} {case['lattice']} a/h {case['n']}" + \
         (f" seed {case['seed']}" if "seed" in case else "")
 
 
 def setting(case):
     """The measured setting as deck keys, the plate's size as a comment."""
-    return dict(case, h=H, recontact="none", note=f"crack length {case['n']} spacings")
+    checked = f" or more (its path checked against {case['checked']})" if case.get("checked") else ""
+    return dict(case, h=H, recontact="none", note=f"crack length {case['n']} spacings{checked}")
+
+
+def trusted(points):
+    """The points the recommendation may pick, (cost, error, row): a
+    setting (a case but its crack length and seed) measured at a/h = n and
+    2n, with the worst of its errors at both (over every seed) and of the
+    angle's move between them as its error, and the cost of its run at n.
+    A single run is not a recommendation: at 3-4 spacings and a/h <= 50
+    its angle scatters by about 5 degrees, and one jittered plate is one
+    sample of a 10-28 degree scatter; a setting without its next
+    resolution measured has not shown that its path converged."""
+    by = {}
+    for c, e, r in points:
+        key = tuple(sorted((k, str(v)) for k, v in r["case"].items() if k not in ("n", "seed")))
+        by.setdefault(key, {}).setdefault(r["case"]["n"], []).append((c, e, r))
+    out = []
+    for runs in by.values():
+        for n, here in runs.items():
+            there = runs.get(2 * n)
+            if not there:
+                continue
+            move = max(abs(a[2]["metrics"]["theta"] - b[2]["metrics"]["theta"]) for a in here for b in there)
+            err = max([p[1] for p in here + there] + [move])
+            row = here[0][2]
+            out.append((max(p[0] for p in here), err, dict(row, case=dict(row["case"], checked=2 * n))))
+    return out
 
 
 def plate(case):
@@ -183,7 +216,7 @@ def plate(case):
              "create_box 1 box\ncreate_atoms 1 box\n")
     text += deck.jitter(lattice, h, "s s p", seed=case.get("seed", 4711))
     text += f"set group all density {mat['density']}\nset group all volume {deck.volume(lattice, h)!r}\n"
-    text += deck.pair_lines(dict(case, recontact="none"), h, fail=f"fail {case['law']} Gc {gc}")
+    text += deck.pair_lines(dict(case, recontact="none"), h, fail=deck.fail_words(case, gc))
     text += f"fix crack all pd/precrack segment {-2 * half!r} 0.0 {1e-3 * h!r} 0.0\n"
     inner = half - delta
     text += (f"region inner block {-inner!r} {inner!r} {-inner!r} {inner!r} INF INF units box\n"

@@ -22,14 +22,27 @@ def scrub(text):
     return BUILD.sub("", ABSOLUTE.sub(r"\1", text))
 
 
+def module(name):
+    """The quantity's module q_<name>, or None."""
+    try:
+        return importlib.import_module("q_" + name)
+    except ImportError:
+        return None
+
+
 def paste(name, case):
     """The deck lines of a measured case: the quantity module's
     setting(case) when it has one (what its decks fix), else the case."""
-    try:
-        mod = importlib.import_module("q_" + name)
-    except ImportError:
-        mod = None
+    mod = module(name)
     return deck.user_lines(mod.setting(case) if hasattr(mod, "setting") else case)
+
+
+def recommendable(name, pts):
+    """The points a recommendation may pick: the quantity module's
+    trusted(points) when it has one (e.g. a setting measured at two
+    resolutions, with its worst error), else every measured point."""
+    mod = module(name)
+    return mod.trusted(pts) if hasattr(mod, "trusted") else pts
 
 
 def per_step(m):
@@ -99,9 +112,13 @@ def write(results, out_dir):
         pts = _points(rows, q["primary"], cost_kind)
         targets = q.get("targets") or pareto.TARGETS     # in the quantity's error unit
         groups = sorted({r.get("group", "") for _, _, r in pts})
+        rpts = recommendable(name, pts)
         for g in groups:
             label = f"{name} ({g})" if g else name
-            gpts = [p for p in pts if p[2].get("group", "") == g]
+            gpts = [p for p in rpts if p[2].get("group", "") == g]
+            if not gpts:
+                rec.append(f"| {label} | | no setting measured as the quantity requires (see its section) | | |")
+                continue
             for t in targets:
                 best = pareto.cheapest(gpts, t)
                 pick = best or min(gpts, key=lambda p: p[1])

@@ -65,7 +65,8 @@ static double ordinary_run(const lattice *l, double lambda, double mu, double or
   static int calls;
   static const double unit_gc = 1.0; /* crit is beta N for the whole G_c */
   pd_ordinary_state st = {order, sum, ab, (calls++ & 1) ? strain : NULL, 0};
-  const pd_law_energy energy = {crit, crit ? pd_failure_floor(crit, n) : 0.0, &unit_gc};
+  pd_law_energy energy = {crit, crit ? pd_failure_floor(crit, n) : 0.0, &unit_gc, 0.0, 0.0};
+  pd_law_energy_profile(&energy, PD_PROFILE_UNIFORM);
   if (fail && crit) fail->params = &energy;
   pd_tally t = {0};
   t.eatom = psi;

@@ -68,19 +68,32 @@ int main(void)
   /* beta in closed form for Tupek's polynomials (THEORY.md): the thesis'
    * 2D value pi delta Gc / 16, and 16 delta Gc / 63 in 3D (eq. 6.1 gives
    * 63 beta / (32 delta) for the one-sided integral: no factor pi). */
-  check_rel("2D Tupek beta = pi delta Gc / 16 (T14)", pd_energy_failure_beta(PD_INFLUENCE_TUPEK, 2, delta, Gc),
+  check_rel("2D Tupek beta = pi delta Gc / 16 (T14)", pd_energy_failure_beta(PD_INFLUENCE_TUPEK, PD_PROFILE_OPENING, 2, delta, Gc),
             PD_PI * delta * Gc / 16.0, 1e-8);
-  check_rel("3D Tupek beta = 16 delta Gc / 63", pd_energy_failure_beta(PD_INFLUENCE_TUPEK, 3, delta, Gc),
+  check_rel("3D Tupek beta = 16 delta Gc / 63", pd_energy_failure_beta(PD_INFLUENCE_TUPEK, PD_PROFILE_OPENING, 3, delta, Gc),
             16.0 * delta * Gc / 63.0, 1e-8);
   /* constant omega, closed forms: 3D omega = 9 / (4 pi delta^3),
    * I = pi beta omega delta^2 / 2 -> beta = 4 delta Gc / 9; 2D omega =
    * 2 / (pi delta^2), I = 2 beta omega delta -> beta = pi delta Gc / 8 */
-  check_rel("3D constant beta = 4 delta Gc / 9", pd_energy_failure_beta(PD_INFLUENCE_CONSTANT, 3, delta, Gc),
+  check_rel("3D constant beta = 4 delta Gc / 9", pd_energy_failure_beta(PD_INFLUENCE_CONSTANT, PD_PROFILE_OPENING, 3, delta, Gc),
             4.0 * delta * Gc / 9.0, 1e-8);
-  check_rel("2D constant beta = pi delta Gc / 8", pd_energy_failure_beta(PD_INFLUENCE_CONSTANT, 2, delta, Gc),
+  check_rel("2D constant beta = pi delta Gc / 8", pd_energy_failure_beta(PD_INFLUENCE_CONSTANT, PD_PROFILE_OPENING, 2, delta, Gc),
             PD_PI * delta * Gc / 8.0, 1e-8);
-  check_true("2D inverse influence: G_c integral diverges (refused)",
-             pd_energy_failure_beta(PD_INFLUENCE_INVERSE, 2, delta, Gc) < 0.0);
+  check_true("2D inverse influence, opening profile: G_c integral diverges (refused)",
+             pd_energy_failure_beta(PD_INFLUENCE_INVERSE, PD_PROFILE_OPENING, 2, delta, Gc) < 0.0);
+  /* the uniform profile (s_c = beta omega): I = pi beta int omega r^3 dr
+   * (3D), 2 beta int omega r^2 dr (2D); constant omega: beta = 8 Gc / (9
+   * delta) and 3 pi Gc / (8 delta); 2D inverse, omega = 1 / (pi delta r):
+   * I = beta delta / pi, beta = pi Gc / (2 delta) */
+  check_rel("3D constant, uniform profile: beta = 8 Gc / (9 delta)",
+            pd_energy_failure_beta(PD_INFLUENCE_CONSTANT, PD_PROFILE_UNIFORM, 3, delta, Gc), 8.0 * Gc / (9.0 * delta),
+            1e-8);
+  check_rel("2D constant, uniform profile: beta = 3 pi Gc / (8 delta)",
+            pd_energy_failure_beta(PD_INFLUENCE_CONSTANT, PD_PROFILE_UNIFORM, 2, delta, Gc),
+            3.0 * PD_PI * Gc / (8.0 * delta), 1e-8);
+  check_rel("2D inverse, uniform profile: beta = pi Gc / (2 delta) (converges)",
+            pd_energy_failure_beta(PD_INFLUENCE_INVERSE, PD_PROFILE_UNIFORM, 2, delta, Gc), PD_PI * Gc / (2.0 * delta),
+            1e-6);
   /* critical stretch from G_c, MS07 eq. 29 in 3D */
   check_rel("3D s0 = sqrt(5 G / (9 K delta))", pd_critical_stretch(3, 0, 3.0e9, 0.25, 1e-3, 100.0),
             sqrt(5.0 * 100.0 / (9.0 * 2.0e9 * 1e-3)), 1e-14);
@@ -256,8 +269,16 @@ int main(void)
     }
     const double s00[4] = {0, 0, 0, 0.005}, alpha[4] = {0, 0, 0, 0.25}, gc[4] = {0, 0, 0, 2.0};
     const pd_law_legacy legacy = {s00, alpha, s0_atom, pd_failure_floor(s0_atom, NATOM)};
-    const pd_law_energy energy = {crit, pd_failure_floor(crit, NATOM), gc};
-    const pd_failure fl = {.law = PD_FAIL_LEGACY, .params = &legacy}, fe = {.law = PD_FAIL_ENERGY, .params = &energy};
+    /* the energy law with each profile (its length factor: bonds of
+     * lengths 0.5-1.5) */
+    pd_law_energy energy[2] = {{crit, pd_failure_floor(crit, NATOM), gc, 0.0, 0.0},
+                               {crit, pd_failure_floor(crit, NATOM), gc, 0.0, 0.0}};
+    pd_law_energy_profile(&energy[0], PD_PROFILE_UNIFORM);
+    pd_law_energy_profile(&energy[1], PD_PROFILE_OPENING);
+    const pd_failure fl = {.law = PD_FAIL_LEGACY, .params = &legacy};
+    const pd_failure fe[2] = {{.law = PD_FAIL_ENERGY, .params = &energy[0]},
+                              {.law = PD_FAIL_ENERGY, .params = &energy[1]}};
+    int broke_energy[2] = {0, 0}, profiles_differ = 0, wrong_test = 0;
     /* the critical stretch, breaking now or after */
     const pd_law_stretch stretch[2] = {{s00, 0}, {s00, 1}};
     const pd_failure fs[2] = {{.law = PD_FAIL_STRETCH, .params = &stretch[0]},
@@ -269,14 +290,22 @@ int main(void)
       bd.j = rand() % NATOM;
       bd.tij = 3;
       bd.w = 0.5 + rand() / (double) RAND_MAX;
-      bd.r0 = 1.0;
-      bd.len = 1.0 + 0.008 * rand() / RAND_MAX - 0.001;
+      bd.r0 = 0.5 + rand() / (double) RAND_MAX;
+      bd.len = bd.r0 * (1.0 + 0.008 * rand() / RAND_MAX - 0.001);
       const double eps = pd_bond_stretch(&bd), e = 4.0 * rand() / RAND_MAX;
       const pd_bond_force bf = {.release_i = e, .release_j = 0.5 * e, .release = e + 0.5 * e};
       missed += (pd_law_legacy_now(&fl, &bd, eps, &bf) | pd_law_legacy_after(&fl, &bd, eps)) &&
                 !pd_law_legacy_ahead(&fl, &bd, eps, &bf);
-      missed += (pd_law_energy_now(&fe, &bd, eps, &bf) | pd_law_energy_after(&fe, &bd, eps)) &&
-                !pd_law_energy_ahead(&fe, &bd, eps, &bf);
+      for (int a = 0; a < 2; a++) {
+        const int now = pd_law_energy_now(&fe[a], &bd, eps, &bf);
+        missed += (now | pd_law_energy_after(&fe[a], &bd, eps)) && !pd_law_energy_ahead(&fe[a], &bd, eps, &bf);
+        screened_energy += !pd_law_energy_ahead(&fe[a], &bd, eps, &bf);
+        broke_energy[a] += now;
+        /* the test itself: uniform s_c = G_c w (crit_i + crit_j), opening the same / r0^2 */
+        const double threshold = bd.w * (crit[bd.i] + crit[bd.j]) * gc[3] / (a ? bd.r0 * bd.r0 : 1.0);
+        wrong_test += now != (eps > 0.0 && bf.release >= threshold) && fabs(bf.release / threshold - 1.0) > 1e-12;
+      }
+      profiles_differ += pd_law_energy_now(&fe[0], &bd, eps, &bf) != pd_law_energy_now(&fe[1], &bd, eps, &bf);
       for (int a = 0; a < 2; a++) {
         const int now = pd_law_stretch_now(&fs[a], &bd, eps, &bf), after = pd_law_stretch_after(&fs[a], &bd, eps);
         missed += (now | after) && !pd_law_stretch_ahead(&fs[a], &bd, eps, &bf);
@@ -284,7 +313,6 @@ int main(void)
       }
       screened_stretch += !pd_law_stretch_ahead(&fs[0], &bd, eps, &bf);
       screened_legacy += !pd_law_legacy_ahead(&fl, &bd, eps, &bf);
-      screened_energy += !pd_law_energy_ahead(&fe, &bd, eps, &bf);
     }
     check_true("screens: no bond that breaks is screened out (PERI's rule, energy law, stretch)", missed == 0);
     check_true("screens: the stretch's screens out a bond below s0",
@@ -293,8 +321,11 @@ int main(void)
                broke_stretch[0] > 0 && broke_stretch[1] == broke_stretch[0]);
     check_true("screens: PERI's rule's screens out a bond below every atom's s0",
                screened_legacy > 0 && screened_legacy < NBOND);
-    check_true("screens: the energy law's screens out a bond below every pair's threshold",
-               screened_energy > 0 && screened_energy < NBOND);
+    check_true("screens: the energy law's screens out a bond below every pair's threshold (both profiles)",
+               screened_energy > 0 && screened_energy < 2 * NBOND);
+    check_true("energy law: each profile's test is release >= G_c w (crit_i + crit_j) |xi|^q", wrong_test == 0);
+    check_true("energy law: each profile breaks some bonds, and they differ on some",
+               broke_energy[0] > 0 && broke_energy[1] > 0 && profiles_differ > 0);
   }
   /* Pre-crack geometry. */
   {

@@ -87,7 +87,7 @@ cases = [
      "failure of microplastic bonds is not supported"),
     ("energy law with a divergent G_c integral", PLATE + f"pair_style pd/ordinary plane stress thickness 1e-3 influence inverse\n"
      f"pair_coeff * * E 1e9 nu 0.3 horizon {H} fail energy Gc 10\nset group all volume 2.5e-10\n" + RUN,
-     "the G_c integral diverges"),
+     "'fail energy profile opening' with influence inverse in 2D: the G_c integral diverges"),
     ("minimize with bond failure", block(8) + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.3 horizon {H} fail stretch 0.01\n"
      "min_modify dmax 1e-6\nminimize 1e-10 0 10 100\n",
      "is not supported (line search trial states would break or yield bonds); for quasi-static loading use fix"),
@@ -213,6 +213,14 @@ cases += [
      "'alpha' belongs to 'fail legacy"),
     ("Gc with the legacy law", block(6) + f"pair_style pd/bond legacy\npair_coeff * * pmb K 1e9 horizon {H} "
      "fail legacy 0.001 0.25 Gc 10\n", "not to 'fail legacy <s00> <alpha>'"),
+    ("energy law profile unknown", block(6) + ORD + f"{OK_ORD} fail energy Gc 10 profile sharp\n",
+     "'fail energy profile sharp': expected 'opening' or 'uniform'"),
+    ("energy law profile missing", block(6) + ORD + f"{OK_ORD} fail energy Gc 10 profile\n",
+     "'fail energy profile (nothing)': expected 'opening' or 'uniform'"),
+    ("energy law with two profiles", TWO_TYPES + "pair_style pd/ordinary\n"
+     f"pair_coeff 1 1 E 1e9 nu 0.3 horizon {H} fail energy Gc 10\n"
+     f"pair_coeff 2 2 E 1e9 nu 0.3 horizon {H} fail energy Gc 10 profile uniform\n" + RUN,
+     "'fail energy' takes one profile for all type pairs: 2 2 has uniform, 1 1 has opening"),
     ("s0 with the energy law", block(6) + ORD + f"{OK_ORD} fail energy Gc 10 s0 0.01\n",
      "'s0' belongs to 'fail stretch <s0>"),
     ("s0 and Gc together", block(6) + ORD + f"{OK_ORD} fail stretch 0.01 Gc 10\n",

@@ -9,16 +9,18 @@
  * integrably singular at 0; 200000 cells give ~1e-9 relative. */
 #define NCELLS 200000
 
-double pd_energy_failure_beta(pd_influence_kind kind, int dim, double delta, double Gc)
+double pd_energy_failure_beta(pd_influence_kind kind, pd_energy_profile profile, int dim, double delta,
+                              double Gc)
 {
-  if (dim == 2 && pd_influence_singular(kind)) return -1.0;
+  const int q = pd_energy_profile_power(profile);
+  if (dim == 2 && q == -2 && pd_influence_singular(kind)) return -1.0;
   const double h = delta / NCELLS;
   double norm = 0.0, moment = 0.0;
   for (int k = 0; k < NCELLS; k++) {
     const double r = (k + 0.5) * h;
     const double w = pd_influence(kind, dim, r, delta);
     norm += (dim == 3 ? 4.0 * PD_PI * r * r : 2.0 * PD_PI * r) * w * h;
-    moment += (dim == 3 ? r : 1.0) * w * h;
+    moment += pow(r, dim + q) * w * h;
   }
   /* omega = (d / norm) w; I for beta = 1 */
   const double scale = dim / norm;

@@ -8,13 +8,13 @@
 double pd_release(const pd_family *f, pd_release_kind kind, const double n[3])
 {
   /* sum (e.n)+ phi against its orientation average <cos+> sum phi, with
-   * phi ~ w / |xi|^2 (energy law), w |xi| (bond-based) or w (ordinary,
-   * critical stretch), per unit (xi.n) */
+   * phi ~ w / |xi|^2 (energy law, opening), w |xi| (bond-based) or w
+   * (energy law, uniform; ordinary, critical stretch), per unit (xi.n) */
   double across = 0.0, all = 0.0;
   for (int k = 0; k < f->n; k++) {
     const pd_family_bond *b = f->bond + k;
     const double normal = b->xi[0] * n[0] + b->xi[1] * n[1] + b->xi[2] * n[2];
-    const double phi = kind == PD_RELEASE_ENERGY_LAW  ? b->w / (b->r * b->r)
+    const double phi = kind == PD_RELEASE_ENERGY_OPENING ? b->w / (b->r * b->r)
                        : kind == PD_RELEASE_BOND_BASED ? b->w * b->r
                                                        : b->w;
     all += phi * b->r;

@@ -15,8 +15,10 @@
 
 typedef enum pd_release_kind {
   /* fail energy, calibrated on this family averaged over orientations
-   * (pd_energy_failure_beta_lattice): phi ~ w / |xi|^2 */
-  PD_RELEASE_ENERGY_LAW,
+   * (pd_energy_failure_beta_lattice), with its uniform profile: phi ~ w */
+  PD_RELEASE_ENERGY_UNIFORM,
+  /* ... with the opening profile: phi ~ w / |xi|^2 */
+  PD_RELEASE_ENERGY_OPENING,
   /* a bond-based pair broken at the critical stretch calibrated on this
    * family averaged over orientations (pd_critical_stretch_factor):
    * phi ~ w |xi| */
