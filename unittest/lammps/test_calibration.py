@@ -211,13 +211,15 @@ check_le("... and G_c within 3% at each", max(abs(v - 1) for v in strain.values(
 # partners all keep theirs. Taken over every atom of share 1, which
 # includes those that lost up to the tolerance (25% here) of their family
 # to the band's faces, the median was low and the bands released 5-7% too
-# much. A band's G samples its crossing bonds (standard deviation 1.4%
-# over 10 seeds, mean 1.003): the mean of three within 2%, each within 4%
+# much. A band's G samples its crossing bonds (at a window of 12 lattice
+# windows: standard deviation 1.4% over 10 seeds, mean 1.003; the
+# accuracy tool's windows are 48 now, its three seeds 1.003-1.006): the
+# mean of three within 2%, each within 2%
 case = {"style": "pd/bond", "law": "stretch", "lattice": "hex", "ratio": 3, "r": 0.004, "quadrature": "point"}
 g = list(separation(case, ("jitter", "jitter2", "jitter3")).values())
 check_le("pd/bond fail stretch Gc, jittered hex bands: mean G / G_c of three seeds within 2%",
          abs(sum(g) / len(g) - 1), 0.02, ", ".join(f"{v:.3f}" for v in g))
-check_le("... each within 4%", max(abs(v - 1) for v in g), 0.04)
+check_le("... each within 2%", max(abs(v - 1) for v in g), 0.02)
 
 # the energy law on jittered plates (positions +-0.25 spacings, volumes
 # +-30%, three seeds), separated across a plane off the lattice the
@@ -225,13 +227,15 @@ check_le("... each within 4%", max(abs(v - 1) for v in g), 0.04)
 # no particle crosses, each crossing pair counted by its lattice
 # separation along n, not its own: the energy law, whose release is
 # weighted to short bonds, then released 1.053-1.078 G_c on the hexagonal
-# lattice (the lattice itself: 1.008)
+# lattice (the lattice itself: 1.008). Measured (48 lattice windows):
+# square 0.982-1.004, hexagonal 0.994-1.017: each seed within 2.5%
 for lattice in ("square", "hex"):
     case = {"style": "pd/ordinary", "law": "energy", "lattice": lattice, "ratio": 3, "r": 0.004,
             "quadrature": "point"}
     g = list(separation(case, ("jitter", "jitter2", "jitter3")).values())
     check_le(f"energy law on jittered {lattice} plates: mean G / G_c of three seeds within 3%",
              abs(sum(g) / len(g) - 1), 0.03, ", ".join(f"{x:.3f}" for x in g))
+    check_le("... each within 2.5%", max(abs(x - 1) for x in g), 0.025)
 
 # The energy law's profile across a plane of atoms at 3 spacings (with the
 # directional correction): the opening profile (T14 eq. 6.3), whose
