@@ -1,8 +1,7 @@
 /* ----------------------------------------------------------------------
-   PERIDYNAMICS_EXT: 'fail energy [Gc <Gc>] [profile uniform|opening]',
-   energy-based failure of a
-   state-based material (T14 eq. 6.1-6.5; the bond test and the calibration:
-   core/pd_law_energy.{h,c}).
+   PERIDYNAMICS_EXT: 'fail energy [Gc <Gc>] [profile opening|uniform]',
+   energy-based failure of a state-based material (T14 eq. 6.1-6.5; the
+   bond test and the calibration: core/pd_law_energy.{h,c}).
 ------------------------------------------------------------------------- */
 
 #include "pd_failure_law.h"

@@ -15,8 +15,8 @@ double pd_release(const pd_family *f, pd_release_kind kind, const double n[3])
     const pd_family_bond *b = f->bond + k;
     const double normal = b->xi[0] * n[0] + b->xi[1] * n[1] + b->xi[2] * n[2];
     const double phi = kind == PD_RELEASE_ENERGY_OPENING ? b->w / (b->r * b->r)
-                       : kind == PD_RELEASE_BOND_BASED ? b->w * b->r
-                                                       : b->w;
+                       : kind == PD_RELEASE_BOND_BASED    ? b->w * b->r
+                                                          : b->w;
     all += phi * b->r;
     if (normal > 0.0) across += normal * phi;
   }
