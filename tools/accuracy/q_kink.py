@@ -173,9 +173,9 @@ def trusted(points):
     setting (a case but its crack length and seed) measured at a/h = n and
     2n, with the worst of its errors at both (over every seed) and of the
     angle's move between them as its error, and the cost of its run at n.
-    A single run is not a recommendation: at 3-4 spacings and a/h <= 50
-    its angle scatters by about 5 degrees, and one jittered plate is one
-    sample of a 10-28 degree scatter; a setting without its next
+    A single run is not a recommendation: at 4 spacings the angle moves
+    by 2.5-4 degrees between a/h = 50 and 100, and one jittered plate is
+    one sample of a 10-22 degree scatter; a setting without its next
     resolution measured has not shown that its path converged."""
     by = {}
     for c, e, r in points:
