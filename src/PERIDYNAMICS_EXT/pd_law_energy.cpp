@@ -59,12 +59,13 @@ class LawEnergy : public PDFailureLaw {
       next = take_keyword(line, GC, narg, arg, iarg);
       if (next == iarg && iarg < narg && strcmp(arg[iarg], "profile") == 0) {
         const char *word = iarg + 1 < narg ? arg[iarg + 1] : "(nothing)";
+        const int nprofiles = sizeof(PROFILES) / sizeof(PROFILES[0]);
         int k = 0;
-        while (k < 2 && strcmp(word, PROFILES[k]) != 0) k++;
-        if (k == 2)
+        while (k < nprofiles && strcmp(word, PROFILES[k]) != 0) k++;
+        if (k == nprofiles)
           error->all(FLERR, "Pair {} coeff: 'fail energy profile {}': expected 'opening' or 'uniform'", style(),
                      word);
-        take(line, PROFILE, k == PD_PROFILE_OPENING ? "1" : "0");
+        take(line, PROFILE, std::to_string(k).c_str());    // the coefficient is the pd_energy_profile
         next = iarg + 2;
       }
       if (next == iarg) return iarg;

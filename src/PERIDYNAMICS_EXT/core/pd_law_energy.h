@@ -36,11 +36,11 @@ typedef struct pd_law_energy {
   double unit, opening;
 } pd_law_energy;
 
-/* unit and opening of a profile */
+/* unit and opening of a profile, from its power (f^2 = |xi|^-q) */
 PD_INLINE void pd_law_energy_profile(pd_law_energy *p, pd_energy_profile profile)
 {
-  p->unit = profile == PD_PROFILE_OPENING ? 0.0 : 1.0;
-  p->opening = 1.0 - p->unit;
+  p->opening = pd_energy_profile_power(profile) == -2 ? 1.0 : 0.0;
+  p->unit = 1.0 - p->opening;
 }
 
 /* The test with the far end's crit given: in tension, the released
