@@ -144,15 +144,25 @@ for h, dt in [(5e-4, 2.5e-8)] + ([(4e-4, 2e-8)] if os.environ.get("PDEXT_VALIDAT
 STEPS, DT = 800, 2.5e-8
 dump = DUMP.format(file="{name}")
 run(strip(5e-4, 0, DT).split("pair_style")[0] + "write_data strip.data\n", d)
+# (and the energy law's uniform profile, whose calibration is per atom too)
+uniform = {}
+for ranks in (1, 2):
+    s = replace_exact(strip(5e-4, STEPS, DT, dumps=dump.format(name=f"u{ranks}"), data="strip.data"),
+                      f"fail energy Gc {GC}", f"fail energy Gc {GC} profile uniform")
+    uniform[ranks] = run(s, d, ranks=ranks)[1][-1]
 finals = {}
 for ranks in (1, 2):
     _, rows = run(strip(5e-4, STEPS, DT, dumps=dump.format(name=f"r{ranks}"), data="strip.data"), d, ranks=ranks)
     finals[ranks] = rows[-1]
-check("1 and 2 ranks break the same number of bonds", finals[1]["c_frac[3]"] == finals[2]["c_frac[3]"] > 0,
-      f"{finals[1]['c_frac[3]']:.0f} vs {finals[2]['c_frac[3]']:.0f}")
-check_le("1 and 2 ranks dissipate the same energy", abs(finals[1]["c_frac[2]"] / finals[2]["c_frac[2]"] - 1), 1e-9,
-         "round-off")
-check_le("1 and 2 ranks end at the same positions", max_rel_diff(read_dump(f"{d}/r1"), read_dump(f"{d}/r2")), 1e-10)
+for what, f, name in (("", finals, "r"), (", profile uniform", uniform, "u")):
+    check(f"1 and 2 ranks break the same number of bonds{what}", f[1]["c_frac[3]"] == f[2]["c_frac[3]"] > 0,
+          f"{f[1]['c_frac[3]']:.0f} vs {f[2]['c_frac[3]']:.0f}")
+    check_le(f"1 and 2 ranks dissipate the same energy{what}", abs(f[1]["c_frac[2]"] / f[2]["c_frac[2]"] - 1), 1e-9,
+             "round-off")
+    check_le(f"1 and 2 ranks end at the same positions{what}",
+             max_rel_diff(read_dump(f"{d}/{name}1"), read_dump(f"{d}/{name}2")), 1e-10)
+check("the profiles break different bonds (the uniform one is used)", uniform[1]["c_frac[3]"] != finals[1]["c_frac[3]"],
+      f"{uniform[1]['c_frac[3]']:.0f} vs {finals[1]['c_frac[3]']:.0f}")
 
 # a run split in two in one process: the second run's first evaluation
 # repeats the step at which the first ended, bonds that broke there included
