@@ -272,6 +272,8 @@ class PairPD : public Pair, public PDFamilySource {
   // correction of the bond weights, once, at the run that built the families
   virtual bool directional_moment(int & /*power*/) const { return false; }
   void correct_directions(const std::vector<double> &share);
+  std::vector<double> lattice_forms(int power, const std::vector<bool> &lattice);
+  void exchange_rows(double *rows, int width, const std::vector<int> &slot, int nslots, bool to_owners);
   std::vector<bool> lattice_types() const;    // per type: its atoms sit on a lattice
   // each type's median of q over the owned atoms that take selects (NaN: none)
   std::vector<double> type_medians(const double *q, const std::function<bool(int)> &take) const;

@@ -118,9 +118,10 @@ def cases(mode):
     pure mode II, square lattice, 3 spacings at a/h = 25 and 50 and 4
     spacings at a/h = 50, pd/ordinary energy and pd/bond stretch (about
     40 s); full: also a/h = 100 at 3 and 4 spacings, 200 at 4, K_II/K_I =
-    1 at 4 spacings and a/h = 50, and, at a/h = 25, hex, three jittered
-    plates and K_II/K_I = 1, and the energy law's uniform profile at 4
-    spacings, a/h = 100 and 200 (about 14 minutes)."""
+    1 at 4 spacings and a/h = 50, 100 and 200, hex at 5 spacings and a/h =
+    100 and 200, and, at a/h = 25, hex, three jittered plates and
+    K_II/K_I = 1, and the energy law's uniform profile at 4 spacings, a/h
+    = 100 and 200 (about 30 minutes)."""
     if mode == "smoke":
         return [{"style": "pd/ordinary", "law": "energy", "lattice": "square", "ratio": 3, "n": n, "mix": "II"}
                 for n in (25, 50)]
@@ -136,7 +137,11 @@ def cases(mode):
             out.append({"style": style, "law": law, "lattice": "square", "ratio": 4, "n": n, "mix": "II"})
     if mode == "full":
         for style, law in laws:
-            out.append({"style": style, "law": law, "lattice": "square", "ratio": 4, "n": 50, "mix": 1.0})
+            for n in (50, 100, 200):
+                out.append({"style": style, "law": law, "lattice": "square", "ratio": 4, "n": n, "mix": 1.0})
+            # at 3 and 4 spacings the hexagonal lattice's path is not converged
+            for n in (100, 200):
+                out.append({"style": style, "law": law, "lattice": "hex", "ratio": 5, "n": n, "mix": "II"})
             out.append({"style": style, "law": law, "lattice": "hex", "ratio": 3, "n": 25, "mix": "II"})
             # three arrangements: one jittered plate is one sample of the path's scatter
             for seed in (4711, 1, 2):

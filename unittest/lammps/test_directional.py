@@ -12,19 +12,27 @@ for it, but a bond's weight takes the mean of its two ends' forms, and
 neighbouring irregular families differ. The hexagonal lattice is
 isotropic already: every factor is 1.
 
+A lattice's complete families take one sampled family's form (only the
+others fit their own): a periodic lattice fits none of its own, and two
+bodies of one type on lattices turned 45 degrees apart give each body's
+deep interior the per-atom energy it has alone (the turned lattice's
+families have other eighth moments: taking the first one's form would put
+its energy off by several per cent), on 1 and 2 ranks.
+
 The weights are scaled once, by the run that builds the families: a
 restart file keeps them (the continued run's energy is the first's to
 round-off, and it scales nothing), and 2 ranks give 1 rank's energy. A
 family too irregular for the fit (its own form would make a bond's factor
 negative) is moved toward f = 1 until its smallest factor is 0.25, and the
 log counts those atoms."""
+import math
 import os
 import re
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tools", "accuracy"))
-from lmptest import LMP, check, check_le, finish, run, workdir  # noqa: E402
+from lmptest import LMP, check, check_le, finish, read_dump, run, workdir  # noqa: E402
 import deck  # noqa: E402
 import q_constants  # noqa: E402
 
@@ -75,6 +83,10 @@ check("hex: every factor 1 (isotropic already)", factors(out) == (1.0, 1.0), f"l
 out, _ = run(block("square", "pd/ordinary"), workdir())
 lo, hi = factors(out) or (0, 0)
 check("square: the log reports the factors' range", 0.8 < lo < 1.0 < hi < 1.2, f"{lo} .. {hi}")
+own_fits = re.search(r"\((\d+) atoms fitted on their own family", out)
+check("square, periodic: every family takes the sampled one's form, none fits its own",
+      own_fits is not None and int(own_fits.group(1)) == 0, own_fits.group(0) if own_fits else "no such line")
+
 predicted = re.search(r"lattice error of the constants on sq, .* point quadrature, directional correction: "
                       r"dilatation (\S+), shear along the lattice axes (\S+), simple shear xy (\S+)\n", out)
 check("square: the setup report predicts the corrected family's constants (every mode 0%)",
@@ -91,6 +103,60 @@ m = re.search(r"bond weights scaled by ([0-9.]+) \.\. [0-9.]+; (\d+) atoms' fami
 check("irregular families: the run goes on, the log names the atoms corrected only partly, and no factor is "
       "below the floor", m is not None and int(m.group(2)) > 0 and float(m.group(1)) >= 0.25 - 5e-4,
       m.group(0) if m else "no such line")
+
+
+def grains(which):
+    """Square-lattice plates of one type, 'a' along the axes and 'b' turned
+    45 degrees, 10 spacings apart (no bond between them), sheared and
+    stretched uniformly after the build; each atom's x, y and energy."""
+    body = {"a": ("0", "20"), "b": ("30", "50")}
+    text = deck.header("square", H, "f f p")
+    text += f"region box block {-2 * H!r} {52 * H!r} {-2 * H!r} {22 * H!r} {-0.5 * H!r} {0.5 * H!r} units box\n"
+    text += "create_box 1 box\n"
+    for g in which:
+        lo, hi = (float(v) * H for v in body[g])
+        orient = " orient x 1 1 0 orient y -1 1 0 orient z 0 0 1" if g == "b" else ""
+        text += (f"lattice sq {H!r}{orient}\n"
+                 f"region {g} block {lo!r} {hi!r} 0 {20 * H!r} {-0.5 * H!r} {0.5 * H!r} units box\n")
+        text += f"create_atoms 1 region {g}\n"
+    text += f"set group all density {deck.material()['density']}\nset group all volume {deck.volume('square', H)!r}\n"
+    text += deck.pair_lines({"style": "pd/ordinary", "lattice": "square", "ratio": 3}, H)
+    text += ("run 0\nvariable dx atom 2e-3*x+1e-3*y\nvariable dy atom 1e-3*x-5e-4*y\n"
+             "displace_atoms all move v_dx v_dy 0 units box\ncompute e all pe/atom\n"
+             "run 0\nwrite_dump all custom grains.dump id x y c_e modify format float %.17g\n")
+    return text
+
+
+def deep_energies(which, ranks=1):
+    """{(x, y) rounded to 0.01 spacing: energy} of the atoms 7 spacings or
+    more inside either body's region (their partners' families are
+    complete too), the log and the number of atoms."""
+    d = workdir()
+    out, _ = run(grains(which), d, ranks=ranks)
+    atoms = read_dump(os.path.join(d, "grains.dump")) if os.path.exists(os.path.join(d, "grains.dump")) else {}
+    deep = {}
+    for x, y, e in atoms.values():
+        u, v = x / H, y / H
+        inside = (7 <= u <= 13 or 37 <= u <= 43) and 7 <= v <= 13
+        if inside:
+            deep[(round(u, 2), round(v, 2))] = e
+    return deep, out, len(atoms)
+
+
+alone_a, _, _ = deep_energies("a")
+alone_b, _, _ = deep_energies("b")
+together, out, natoms = deep_energies("ab")
+two, _, _ = deep_energies("ab", ranks=2)
+alone = {**alone_a, **alone_b}
+spread = max(abs(e / alone[k] - 1) for k, e in together.items()) if together.keys() == alone.keys() else math.inf
+own_fits = re.search(r"\((\d+) atoms fitted on their own family", out)
+check("two bodies turned 45 degrees apart: some families fit their own form, some take the sample's",
+      own_fits is not None and 0 < int(own_fits.group(1)) < natoms,
+      own_fits.group(0) if own_fits else "no such line")
+check_le(f"two bodies turned 45 degrees apart: each deep interior atom's energy as alone ({len(together)} atoms)",
+         spread, 1e-9, "the same forms; round-off of sums in another order")
+spread2 = max(abs(e / together[k] - 1) for k, e in two.items()) if two.keys() == together.keys() else math.inf
+check_le("two bodies turned 45 degrees apart, 2 ranks: 1 rank's energies", spread2, 1e-9, "round-off")
 
 # restart: the scaled weights are kept, not scaled again
 d = workdir()

@@ -66,20 +66,46 @@ int pd_directional_moments(int dim)
   return 1 + monomial_count(dim, 8);
 }
 
-void pd_directional_add(int dim, const double n[3], double mu, double *moments)
+void pd_directional_monomials(int dim, const double n[3], double *m)
 {
-  moments[0] += mu;
   double p[3][9];
   component_powers(n, 8, p);
   /* monomial()'s order walked in place (found one by one with monomial(),
    * a loop each, the sums were most of the correction's set-up: 4.7x) */
-  double *m = moments + 1;
   if (dim != 3) {
-    for (int i = 0; i <= 8; i++) m[i] += mu * (p[0][8 - i] * p[1][i] * p[2][0]);
+    for (int i = 0; i <= 8; i++) m[i] = p[0][8 - i] * p[1][i] * p[2][0];
     return;
   }
   for (int a = 8; a >= 0; a--)
-    for (int c = 0; c <= 8 - a; c++) *m++ += mu * (p[0][a] * p[1][8 - a - c] * p[2][c]);
+    for (int c = 0; c <= 8 - a; c++) *m++ = p[0][a] * p[1][8 - a - c] * p[2][c];
+}
+
+void pd_directional_accumulate(int dim, const double *m, double mu, double *moments)
+{
+  moments[0] += mu;
+  const int count = monomial_count(dim, 8);
+  for (int k = 0; k < count; k++) moments[1 + k] += mu * m[k];
+}
+
+void pd_directional_add(int dim, const double n[3], double mu, double *moments)
+{
+  double m[PD_DIRECTIONAL_MAX_MOMENTS - 1];
+  pd_directional_monomials(dim, n, m);
+  pd_directional_accumulate(dim, m, mu, moments);
+}
+
+double pd_directional_signature(int dim, const double *m)
+{
+  /* weights 1 .. 2 spread by the golden ratio: no monomial, and no
+   * difference of two families' sums short of a coincidence, weighs 0 */
+  static double weight[PD_DIRECTIONAL_MAX_MOMENTS - 1];
+  if (weight[0] == 0.0)
+    for (int k = PD_DIRECTIONAL_MAX_MOMENTS - 2; k >= 0; k--)
+      weight[k] = 1.0 + fmod(0.6180339887498949 * (k + 1), 1.0);
+  const int count = monomial_count(dim, 8);
+  double s = 0.0;
+  for (int k = 0; k < count; k++) s += weight[k] * m[k];
+  return s;
 }
 
 /* The isotropic fourth moment t (I I + 2 sym) at monomial e: 3t for

@@ -35,6 +35,17 @@ int pd_directional_moments(int dim);
 
 /* Adds one bond (unit direction n, stiffness share mu) to a family's sums. */
 void pd_directional_add(int dim, const double n[3], double mu, double *moments);
+/* The same in two steps, for a bond added to both its ends' sums: the
+ * eighth-degree monomials n^B of its direction (45 in 3D, 9 in 2D), then
+ * their sums' update; pd_directional_add does exactly these operations. */
+void pd_directional_monomials(int dim, const double n[3], double *m);
+void pd_directional_accumulate(int dim, const double *m, double mu, double *moments);
+
+/* One number per direction, a fixed combination of its monomials m with
+ * weights between 1 and 2: two families whose sums of mu times it (and of
+ * mu) agree to round-off have the same eighth moments, short of a
+ * coincidence, and so fit the same form. */
+double pd_directional_signature(int dim, const double *m);
 
 /* The quartic form of a family from its sums. Returns 0, or -1 when the
  * eighth moments are singular (a family too small or flat to fit: form is
