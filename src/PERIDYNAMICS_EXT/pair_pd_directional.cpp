@@ -87,14 +87,16 @@ void PairPD::exchange_rows(double *rows, int width, const std::vector<int> &slot
   }
 }
 
-// Per lattice type, the form of its sampled complete family and that
-// family's two sums (mu, mu x signature), in rows of nterms + 2; NaN for a
-// type that has none (or is not on a lattice).
+// Per lattice type, the form of its sampled complete family, that
+// family's two sums (mu, mu x signature) and the form's smallest factor on
+// its bonds, in rows of nterms + 3; NaN for a type that has none (or is
+// not on a lattice).
 std::vector<double> PairPD::lattice_forms(int power, const std::vector<bool> &lattice)
 {
-  const int d = dim(), nterms = pd_directional_terms(d), row = nterms + 2, n = atom->ntypes + 1;
+  const int d = dim(), nterms = pd_directional_terms(d), row = nterms + 3, n = atom->ntypes + 1;
   std::vector<double> sample = family_sample_sums(row, [&](const pd_family &f, double *out) {
     pd_family_directional_form(&f, power, out);
+    out[nterms + 2] = INFINITY;
     for (int b = 0; b < f.n; b++) {
       const pd_family_bond &bd = f.bond[b];
       const double u[3] = {bd.xi[0] / bd.r, bd.xi[1] / bd.r, bd.xi[2] / bd.r};
@@ -103,6 +105,7 @@ std::vector<double> PairPD::lattice_forms(int power, const std::vector<bool> &la
       const double mu = stiffness_share(bd.w * f.volume, bd.r, power);
       out[nterms] += mu;
       out[nterms + 1] += mu * pd_directional_signature(d, m);
+      out[nterms + 2] = MIN(out[nterms + 2], pd_directional_factor(d, out, u));
     }
   });
   std::vector<double> present(n, 0.0);
@@ -128,7 +131,7 @@ void PairPD::correct_directions(const std::vector<double> &share)
   // bonds, in another order)
   const std::vector<bool> lattice = lattice_types();
   const std::vector<double> sample = lattice_forms(power, lattice);
-  const auto sampled = [&](int t) { return sample.data() + (size_t) t * (nterms + 2); };
+  const auto sampled = [&](int t) { return sample.data() + (size_t) t * (nterms + 3); };
   std::vector<double> own(nall, 1.0);
   bool any_lattice = false;
   for (int t = 1; t < ntypes; t++) any_lattice = any_lattice || !std::isnan(sampled(t)[0]);
@@ -214,10 +217,11 @@ void PairPD::correct_directions(const std::vector<double> &share)
 
   // each form's smallest factor on its own family's bonds; a form that
   // would soften a bond below the floor (or make it negative) moves toward
-  // f = 1 just enough (a shared form by its type's smallest)
+  // f = 1 just enough (a shared form by its sampled family's smallest)
   std::vector<double> lowest(nall, -INFINITY);    // minus the smallest
   bonds->each_reference_bond([&](int i, int j, const double *xi, double) {
     double n[3];
+    if (slot[i] < 0 && slot[j] < 0) return;
     if (!(unit_direction(xi, n) > 0.0)) return;
     double f[2];
     pd_directional_factors(d, form(i), form(j), n, f);
@@ -225,20 +229,16 @@ void PairPD::correct_directions(const std::vector<double> &share)
     lowest[j] = MAX(lowest[j], -f[1]);
   });
   bonds->max_to_owners(lowest.data());
-  std::vector<double> type_lowest(ntypes, -INFINITY), sharing(ntypes, 0.0);
+  std::vector<double> sharing(ntypes, 0.0);
   bigint limited = 0;
   for (int i = 0; i < nlocal; i++)
     if (slot[i] >= 0) limited += pd_directional_limit(d, form(i), -lowest[i]);
-    else {
-      type_lowest[type[i]] = MAX(type_lowest[type[i]], lowest[i]);
-      sharing[type[i]] += 1.0;
-    }
-  MPI_Allreduce(MPI_IN_PLACE, type_lowest.data(), ntypes, MPI_DOUBLE, MPI_MAX, world);
+    else sharing[type[i]] += 1.0;
   MPI_Allreduce(MPI_IN_PLACE, sharing.data(), ntypes, MPI_DOUBLE, MPI_SUM, world);
   MPI_Allreduce(MPI_IN_PLACE, &limited, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (limited) exchange_rows(rows.data(), nterms, slot, nslots, false);
   for (int t = 1; t < ntypes; t++)
-    if (sharing[t] > 0.0 && pd_directional_limit(d, &shared[(size_t) t * nterms], -type_lowest[t]))
+    if (sharing[t] > 0.0 && pd_directional_limit(d, &shared[(size_t) t * nterms], sampled(t)[nterms + 2]))
       limited += (bigint) sharing[t];
 
   double range[2] = {INFINITY, INFINITY};    // smallest factor, minus the largest
