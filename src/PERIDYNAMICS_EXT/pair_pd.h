@@ -266,13 +266,14 @@ class PairPD : public Pair, public PDFamilySource {
   void calibrate_families();
   void mark_complete_families(const std::vector<double> &complete_share, const std::vector<bool> &lattice);
   std::vector<char> complete_family;    // per owned atom: its family is certainly complete
+  std::vector<bool> on_lattice;         // per type: lattice_types() at the last calibration
   // 'directional_correction yes' (core/pd_directional.h,
   // pair_pd_directional.cpp): whether the style offers it, with the power
   // of |xi| in a bond's share w V |xi|^power of the stiffness; and the
   // correction of the bond weights, once, at the run that built the families
   virtual bool directional_moment(int & /*power*/) const { return false; }
   void correct_directions(const std::vector<double> &share);
-  std::vector<double> lattice_forms(int power, const std::vector<bool> &lattice);
+  std::vector<double> lattice_forms(int power);
   void exchange_rows(double *rows, int width, const std::vector<int> &slot, int nslots, bool to_owners);
   std::vector<bool> lattice_types() const;    // per type: its atoms sit on a lattice
   // each type's median of q over the owned atoms that take selects (NaN: none)

@@ -130,7 +130,8 @@ void PairPD::calibrate_families()
 {
   const double *v = bonds->family_volume();
   const int n = atom->ntypes + 1;
-  const std::vector<bool> lattice = lattice_types();
+  on_lattice = lattice_types();
+  const std::vector<bool> &lattice = on_lattice;
   std::vector<double> largest(n, 0.0);
   for (int i = 0; i < atom->nlocal; i++) largest[atom->type[i]] = MAX(largest[atom->type[i]], v[i]);
   MPI_Allreduce(MPI_IN_PLACE, largest.data(), n, MPI_DOUBLE, MPI_MAX, world);

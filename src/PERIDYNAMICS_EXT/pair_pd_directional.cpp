@@ -16,8 +16,8 @@
    files keep them).
 
    A lattice's complete families are one family repeated: an atom whose
-   family has the eighth moments of its type's sampled one (by two sums,
-   mu and mu times a signature of the direction) takes that family's form,
+   family has the eighth moments of its type's sampled one (by its sums of
+   mu and of mu times two signatures of the direction) takes its form,
    fitted once in the same order on any rank count; only the others (near
    a surface, off the lattice) keep sums of their own, 46 numbers an atom
    in 3D, in rows of their own (the bench block's 48^3 lattice: 72 MB less
@@ -58,6 +58,20 @@ static double stiffness_share(double w, double r, int power)
   return w * (power == 0 ? 1.0 : power == 1 ? r : pow(r, power));
 }
 
+// A family's sums that tell it from another: mu, then mu times each
+// signature of the direction (core/pd_directional.h); and the numbers a
+// lattice's sample adds to its form: these and its smallest factor.
+constexpr int SIGNATURE_SUMS = 1 + PD_DIRECTIONAL_SIGNATURES, SAMPLE_EXTRA = SIGNATURE_SUMS + 1;
+
+// a bond of direction n and stiffness share mu onto its family's sums
+static void add_signatures(const double n[3], double mu, double *sums)
+{
+  double s[PD_DIRECTIONAL_SIGNATURES];
+  pd_directional_signatures(n, s);
+  sums[0] += mu;
+  for (int k = 0; k < PD_DIRECTIONAL_SIGNATURES; k++) sums[1 + k] += mu * s[k];
+}
+
 // Rows of 'width' numbers for some of the atoms (slot[i] >= 0: the row's
 // place), owned and ghost, through the bond store's reverse sum or forward
 // copy: a few columns at a time through an atom-indexed scratch, or in
@@ -87,32 +101,30 @@ void PairPD::exchange_rows(double *rows, int width, const std::vector<int> &slot
   }
 }
 
-// Per lattice type, the form of its sampled complete family, that
-// family's two sums (mu, mu x signature) and the form's smallest factor on
-// its bonds, in rows of nterms + 3; NaN for a type that has none (or is
-// not on a lattice).
-std::vector<double> PairPD::lattice_forms(int power, const std::vector<bool> &lattice)
+// Per lattice type, in rows of nterms + SAMPLE_EXTRA: the form of its
+// sampled complete family, that family's sums (mu, then mu times each
+// signature) and the form's smallest factor on its bonds; NaN for a type
+// that has none (or is not on a lattice).
+std::vector<double> PairPD::lattice_forms(int power)
 {
-  const int d = dim(), nterms = pd_directional_terms(d), row = nterms + 3, n = atom->ntypes + 1;
+  const int d = dim(), nterms = pd_directional_terms(d), row = nterms + SAMPLE_EXTRA, n = atom->ntypes + 1;
   std::vector<double> sample = family_sample_sums(row, [&](const pd_family &f, double *out) {
     pd_family_directional_form(&f, power, out);
-    out[nterms + 2] = INFINITY;
+    double *sums = out + nterms, &smallest = out[row - 1];
+    smallest = INFINITY;
     for (int b = 0; b < f.n; b++) {
       const pd_family_bond &bd = f.bond[b];
       const double u[3] = {bd.xi[0] / bd.r, bd.xi[1] / bd.r, bd.xi[2] / bd.r};
-      double m[PD_DIRECTIONAL_MAX_MOMENTS - 1];
-      pd_directional_monomials(d, u, m);
       const double mu = stiffness_share(bd.w * f.volume, bd.r, power);
-      out[nterms] += mu;
-      out[nterms + 1] += mu * pd_directional_signature(d, m);
-      out[nterms + 2] = MIN(out[nterms + 2], pd_directional_factor(d, out, u));
+      add_signatures(u, mu, sums);
+      smallest = MIN(smallest, pd_directional_factor(d, out, u));
     }
   });
   std::vector<double> present(n, 0.0);
   for (int i = 0; i < atom->nlocal; i++) present[atom->type[i]] += complete_family[i];
   MPI_Allreduce(MPI_IN_PLACE, present.data(), n, MPI_DOUBLE, MPI_SUM, world);
   for (int t = 0; t < n; t++)
-    if (!lattice[t] || present[t] == 0.0)
+    if (!on_lattice[t] || present[t] == 0.0)
       for (int k = 0; k < row; k++) sample[(size_t) t * row + k] = NAN;
   return sample;
 }
@@ -129,31 +141,32 @@ void PairPD::correct_directions(const std::vector<double> &share)
   // which atoms take their lattice's form: mu and mu x signature of each
   // family against the sample's (to round-off of sums of a few hundred
   // bonds, in another order)
-  const std::vector<bool> lattice = lattice_types();
-  const std::vector<double> sample = lattice_forms(power, lattice);
-  const auto sampled = [&](int t) { return sample.data() + (size_t) t * (nterms + 3); };
+  const std::vector<double> sample = lattice_forms(power);
+  const auto sampled = [&](int t) { return sample.data() + (size_t) t * (nterms + SAMPLE_EXTRA); };
   std::vector<double> own(nall, 1.0);
   bool any_lattice = false;
   for (int t = 1; t < ntypes; t++) any_lattice = any_lattice || !std::isnan(sampled(t)[0]);
   if (any_lattice) {
-    std::vector<double> sums(2 * (size_t) nall, 0.0);
-    bonds->each_reference_bond([&](int i, int j, const double *xi, double w) {
-      double n[3], m[PD_DIRECTIONAL_MAX_MOMENTS - 1];
+    constexpr int w = SIGNATURE_SUMS;
+    std::vector<double> sums(w * (size_t) nall, 0.0);
+    bonds->each_reference_bond([&](int i, int j, const double *xi, double weight) {
+      double n[3];
       const double r = unit_direction(xi, n);
       if (!(r > 0.0)) return;
-      pd_directional_monomials(d, n, m);
-      const double stiff = stiffness_share(w, r, power), s = pd_directional_signature(d, m);
-      sums[2 * i] += stiff * vol[j];
-      sums[2 * i + 1] += stiff * vol[j] * s;
-      sums[2 * j] += stiff * vol[i];
-      sums[2 * j + 1] += stiff * vol[i] * s;
+      const double stiff = stiffness_share(weight, r, power);
+      double one[w] = {0.0};
+      add_signatures(n, 1.0, one);
+      for (int k = 0; k < w; k++) {
+        sums[w * i + k] += stiff * vol[j] * one[k];
+        sums[w * j + k] += stiff * vol[i] * one[k];
+      }
     });
-    bonds->sum_to_owners(sums.data(), 2);
+    bonds->sum_to_owners(sums.data(), w);
     for (int i = 0; i < nlocal; i++) {
-      const double *ref = sampled(type[i]);
-      const double tol = 1e-10 * (fabs(ref[nterms]) + fabs(ref[nterms + 1]));
-      own[i] = !(share[i] >= 1.0 && fabs(sums[2 * i] - ref[nterms]) <= tol &&
-                 fabs(sums[2 * i + 1] - ref[nterms + 1]) <= tol);
+      const double *ref = sampled(type[i]) + nterms;
+      bool same = share[i] >= 1.0;
+      for (int k = 0; k < w; k++) same = same && fabs(sums[w * i + k] - ref[k]) <= 1e-10 * fabs(ref[0]);
+      own[i] = !same;
     }
     bonds->copy_to_ghosts(own.data());
   }
@@ -164,10 +177,12 @@ void PairPD::correct_directions(const std::vector<double> &share)
       slot[i] = nslots++;
       fitted_here += i < nlocal;
     }
+  int any_own = nslots > 0;    // (a periodic lattice: no rank has a row, and no pass is needed)
+  MPI_Allreduce(MPI_IN_PLACE, &any_own, 1, MPI_INT, MPI_MAX, world);
 
   // the other atoms' own sums, at both ends of every bond (broken or not)
   std::vector<double> rows((size_t) nslots * width, 0.0);
-  bonds->each_reference_bond([&](int i, int j, const double *xi, double w) {
+  if (any_own) bonds->each_reference_bond([&](int i, int j, const double *xi, double w) {
     double n[3], m[PD_DIRECTIONAL_MAX_MOMENTS - 1];
     if (slot[i] < 0 && slot[j] < 0) return;
     const double r = unit_direction(xi, n);
@@ -219,7 +234,7 @@ void PairPD::correct_directions(const std::vector<double> &share)
   // would soften a bond below the floor (or make it negative) moves toward
   // f = 1 just enough (a shared form by its sampled family's smallest)
   std::vector<double> lowest(nall, -INFINITY);    // minus the smallest
-  bonds->each_reference_bond([&](int i, int j, const double *xi, double) {
+  if (any_own) bonds->each_reference_bond([&](int i, int j, const double *xi, double) {
     double n[3];
     if (slot[i] < 0 && slot[j] < 0) return;
     if (!(unit_direction(xi, n) > 0.0)) return;
@@ -228,7 +243,7 @@ void PairPD::correct_directions(const std::vector<double> &share)
     lowest[i] = MAX(lowest[i], -f[0]);
     lowest[j] = MAX(lowest[j], -f[1]);
   });
-  bonds->max_to_owners(lowest.data());
+  if (any_own) bonds->max_to_owners(lowest.data());
   std::vector<double> sharing(ntypes, 0.0);
   bigint limited = 0;
   for (int i = 0; i < nlocal; i++)
@@ -238,7 +253,7 @@ void PairPD::correct_directions(const std::vector<double> &share)
   MPI_Allreduce(MPI_IN_PLACE, &limited, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (limited) exchange_rows(rows.data(), nterms, slot, nslots, false);
   for (int t = 1; t < ntypes; t++)
-    if (sharing[t] > 0.0 && pd_directional_limit(d, &shared[(size_t) t * nterms], sampled(t)[nterms + 2]))
+    if (sharing[t] > 0.0 && pd_directional_limit(d, &shared[(size_t) t * nterms], sampled(t)[nterms + SAMPLE_EXTRA - 1]))
       limited += (bigint) sharing[t];
 
   double range[2] = {INFINITY, INFINITY};    // smallest factor, minus the largest

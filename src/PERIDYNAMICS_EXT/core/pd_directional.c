@@ -51,11 +51,6 @@ static void component_powers(const double n[3], int degree, double p[3][9])
   }
 }
 
-static double monomial_value(double p[3][9], const int e[3])
-{
-  return p[0][e[0]] * p[1][e[1]] * p[2][e[2]];
-}
-
 int pd_directional_terms(int dim)
 {
   return monomial_count(dim, 4);
@@ -94,18 +89,17 @@ void pd_directional_add(int dim, const double n[3], double mu, double *moments)
   pd_directional_accumulate(dim, m, mu, moments);
 }
 
-double pd_directional_signature(int dim, const double *m)
+void pd_directional_signatures(const double n[3], double s[PD_DIRECTIONAL_SIGNATURES])
 {
-  /* weights 1 .. 2 spread by the golden ratio: no monomial, and no
-   * difference of two families' sums short of a coincidence, weighs 0 */
-  static double weight[PD_DIRECTIONAL_MAX_MOMENTS - 1];
-  if (weight[0] == 0.0)
-    for (int k = PD_DIRECTIONAL_MAX_MOMENTS - 2; k >= 0; k--)
-      weight[k] = 1.0 + fmod(0.6180339887498949 * (k + 1), 1.0);
-  const int count = monomial_count(dim, 8);
-  double s = 0.0;
-  for (int k = 0; k < count; k++) s += weight[k] * m[k];
-  return s;
+  /* two directions with unrelated irrational components (a family's sums
+   * of mu (a.n)^8 are linear in its eighth moments, and weigh every one) */
+  static const double a[PD_DIRECTIONAL_SIGNATURES][3] = {{0.5772156649015329, 0.3183098861837907, 0.7548776662466927},
+                                                         {0.4142135623730950, 0.7320508075688772, -0.2360679774997897}};
+  for (int k = 0; k < PD_DIRECTIONAL_SIGNATURES; k++) {
+    const double t = a[k][0] * n[0] + a[k][1] * n[1] + a[k][2] * n[2];
+    const double t2 = t * t, t4 = t2 * t2;
+    s[k] = t4 * t4;
+  }
 }
 
 /* The isotropic fourth moment t (I I + 2 sym) at monomial e: 3t for
@@ -194,17 +188,26 @@ double pd_directional_factor(int dim, const double *form, const double n[3])
 void pd_directional_factors(int dim, const double *form_a, const double *form_b, const double n[3],
                             double f[2])
 {
-  const int count = pd_directional_terms(dim);
   double p[3][9];
   component_powers(n, 4, p);
   double fa = 0.0, fb = 0.0;
-  for (int a = 0; a < count; a++) {
-    int e[3];
-    monomial(dim, 4, a, e);
-    const double v = monomial_value(p, e);
-    fa += form_a[a] * v;
-    fb += form_b[a] * v;
-  }
+  /* monomial()'s order walked in place, the same products in the same
+   * order (found one by one with monomial(), the factors were most of the
+   * correction's passes) */
+  int a = 0;
+  if (dim != 3)
+    for (int i = 0; i <= 4; i++, a++) {
+      const double v = p[0][4 - i] * p[1][i] * p[2][0];
+      fa += form_a[a] * v;
+      fb += form_b[a] * v;
+    }
+  else
+    for (int x = 4; x >= 0; x--)
+      for (int z = 0; z <= 4 - x; z++, a++) {
+        const double v = p[0][x] * p[1][4 - x - z] * p[2][z];
+        fa += form_a[a] * v;
+        fb += form_b[a] * v;
+      }
   f[0] = fa;
   f[1] = fb;
 }

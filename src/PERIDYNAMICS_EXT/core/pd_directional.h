@@ -41,12 +41,12 @@ void pd_directional_add(int dim, const double n[3], double mu, double *moments);
 void pd_directional_monomials(int dim, const double n[3], double *m);
 void pd_directional_accumulate(int dim, const double *m, double mu, double *moments);
 
-/* One number per direction, a fixed combination of its monomials m with
- * weights between 1 and 2: two families whose sums of mu times it (and of
- * mu) agree to round-off have the same eighth moments, short of a
- * coincidence, and so fit the same form. */
-double pd_directional_signature(int dim, const double *m);
-
+/* Numbers of a direction, (a.n)^8 for two fixed directions a with
+ * unrelated irrational components: two families whose sums of mu and of
+ * mu times each agree to round-off have the same eighth moments, short of
+ * a coincidence, and so fit the same form. */
+#define PD_DIRECTIONAL_SIGNATURES 2
+void pd_directional_signatures(const double n[3], double s[PD_DIRECTIONAL_SIGNATURES]);
 /* The quartic form of a family from its sums. Returns 0, or -1 when the
  * eighth moments are singular (a family too small or flat to fit: form is
  * then the isotropic one, f = 1). */
