@@ -9,7 +9,9 @@
    atom (the tables are rectangular: their row length, the longest list
    over all ranks, must be known before they are filled); the cells are
    freed, and the tables filled from the lists, storing each far end as the
-   image it found, before the far ends are checked (map_partners).
+   image it found, before the far ends are checked (map_partners). The
+   lists give their memory back as they are read, so the build's peak is
+   the tables' (the lists are about 4 bytes a bond).
 
    Which candidates become bonds, and what they store, is decided exactly
    as before the cells existed: the minimum image of x0_j - x0_i, the
@@ -226,6 +228,9 @@ class CandidateLists {
   }
   const int *list(int i) const { return items.data + start[i]; }
   int length(int i) const { return (int) (start[i + 1] - start[i]); }
+  // the lists before list i are read: their memory goes back (the tables
+  // they fill grow as they shrink)
+  void read_before(int i) { pd_pages_release(items.data, start[i] * sizeof(int)); }
 
  private:
   Error *error;
@@ -321,6 +326,7 @@ void FixPDBonds::build_families()
 
     // fill: the bonds among the candidates
     for (int i = 0; i < nlocal; i++) {
+      if (i % 1024 == 0) candidates.read_before(i);
       npartner[i] = 0;
       built_tag[i] = tag[i];
       const int *list = candidates.list(i), ncand = candidates.length(i);

@@ -2,13 +2,22 @@
  * holds what is written to it; blocks of 256 KiB and more are, on Linux,
  * mapped on their own, aligned to a huge page and eligible for huge pages
  * (the kernel's own word, /proc/self/smaps, where transparent huge pages
- * are on); shrinking keeps a block's start. */
+ * are on); shrinking keeps a block's start; releasing a block's front
+ * gives its whole huge pages back (mincore: no longer resident) and keeps
+ * the rest. */
+#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
+#define _DEFAULT_SOURCE /* mincore under -std=c11 */
+#endif
 #include "check.h"
 #include "pd_pages.h"
 
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef __linux__
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 #define HUGE_PAGE ((uintptr_t) 2 << 20)
 
@@ -45,6 +54,20 @@ static int huge_page_eligible(const void *p)
   fclose(f);
   return eligible;
 }
+
+#ifdef __linux__
+/* how many of the 4 kB pages of [p, p + bytes) are resident (p page-aligned) */
+static size_t resident_pages(void *p, size_t bytes)
+{
+  const size_t page = (size_t) sysconf(_SC_PAGESIZE), n = (bytes + page - 1) / page;
+  unsigned char *in = malloc(n);
+  size_t count = 0;
+  if (in && mincore(p, bytes, in) == 0)
+    for (size_t k = 0; k < n; k++) count += in[k] & 1;
+  free(in);
+  return count;
+}
+#endif
 
 /* 1 if transparent huge pages are 'always' or 'madvise' here */
 static int huge_pages_on(void)
@@ -99,9 +122,32 @@ int main(void)
   pd_pages_shrink(p, kept); /* again: nothing to give back */
   pd_pages_free(p);
 
+  /* releasing the front of a 10 MiB block read once: the whole 2 MiB pages
+   * below 7 MiB (past the header's first) go, the rest stays as written */
+  const size_t block = 10u << 20, done = 7u << 20;
+  unsigned char *q = pd_pages_alloc(block);
+  check_true("10 MiB block", q && fill_and_check(q, block));
+  pd_pages_release(q, done);
+  int rest = 1;
+  for (size_t k = done; k < block; k++) rest &= q[k] == pattern(k);
+  check_true("released its first 7 MiB: the rest unchanged", rest);
+#ifdef __linux__
+  if (pd_pages_mapped(block)) {
+    unsigned char *base = q - 64;
+    check_true("released its first 7 MiB: the 2 MiB pages from 2 to 6 MiB no longer resident",
+               resident_pages(base + HUGE_PAGE, 2 * HUGE_PAGE) == 0);
+    check_true("released its first 7 MiB: the first page (its header) and the pages from 6 MiB resident",
+               resident_pages(base, 4096) == 1 && resident_pages(base + 3 * HUGE_PAGE, 4096) == 1);
+  }
+#endif
+  pd_pages_release(q, done); /* again: nothing more to give back */
+  pd_pages_release(q, block);
+  pd_pages_free(q);
+
   check_true("0 bytes: none", pd_pages_alloc(0) == NULL);
   check_true("more than the address space: none", pd_pages_alloc(SIZE_MAX / 2) == NULL);
   pd_pages_free(NULL);
   pd_pages_shrink(NULL, 0);
+  pd_pages_release(NULL, 0);
   return check_summary();
 }

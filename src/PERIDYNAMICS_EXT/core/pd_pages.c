@@ -26,6 +26,7 @@
 typedef struct block_header {
   void *base;
   size_t length;
+  size_t released; /* pd_pages_release: the pages below are given back */
 } block_header;
 
 static size_t round_up(size_t n, size_t to) { return (n + to - 1) / to * to; }
@@ -52,6 +53,7 @@ static void *map_block(size_t bytes)
   block_header *h = (block_header *) start;
   h->base = start;
   h->length = length;
+  h->released = 0;
   return start + HEADER;
 }
 #endif
@@ -72,6 +74,7 @@ void *pd_pages_alloc(size_t bytes)
   block_header *h = header_of(p);
   h->base = base;
   h->length = 0;
+  h->released = 0;
   return p;
 }
 
@@ -84,6 +87,25 @@ void pd_pages_shrink(void *p, size_t bytes)
   if (h->length == 0 || keep >= h->length) return;
   munmap((char *) h->base + keep, h->length - keep);
   h->length = keep;
+#else
+  (void) p;
+  (void) bytes;
+#endif
+}
+
+void pd_pages_release(void *p, size_t bytes)
+{
+#if PD_PAGES_MAP
+  if (!p) return;
+  block_header *h = header_of(p);
+  if (h->length == 0) return;
+  /* the whole huge pages below the caller's end, past the header's */
+  size_t end = ((size_t) ((char *) p - (char *) h->base) + bytes) / HUGE_PAGE * HUGE_PAGE;
+  if (end > h->length) end = h->length;
+  const size_t begin = h->released > HUGE_PAGE ? h->released : HUGE_PAGE;
+  if (end <= begin) return;
+  madvise((char *) h->base + begin, end - begin, MADV_DONTNEED);
+  h->released = end;
 #else
   (void) p;
   (void) bytes;

@@ -21,6 +21,14 @@ void *pd_pages_alloc(size_t bytes);
  * keeping its start (a heap block stays as it is). */
 void pd_pages_shrink(void *p, size_t bytes);
 
+/* Gives back the memory of the whole huge pages within the first 'bytes'
+ * of a mapped block (past its first page), whose contents the caller no
+ * longer reads: a block read once from start to end (the family build's
+ * candidate lists) shrinks from the front as the tables it fills grow.
+ * The block stays valid; the pages read as zeros if touched again. A heap
+ * block is left as it is. */
+void pd_pages_release(void *p, size_t bytes);
+
 /* Frees a block of pd_pages_alloc (NULL: nothing). */
 void pd_pages_free(void *p);
 
