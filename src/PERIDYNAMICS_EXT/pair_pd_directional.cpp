@@ -138,9 +138,9 @@ void PairPD::correct_directions(const std::vector<double> &share)
   const int *type = atom->type;
   const double *vol = atom->vfrac;
 
-  // which atoms take their lattice's form: mu and mu x signature of each
-  // family against the sample's (to round-off of sums of a few hundred
-  // bonds, in another order)
+  // which atoms take their lattice's form: each family's sums of mu and of
+  // mu times each signature against the sample's (to round-off of sums of
+  // a few hundred bonds, in another order)
   const std::vector<double> sample = lattice_forms(power);
   const auto sampled = [&](int t) { return sample.data() + (size_t) t * (nterms + SAMPLE_EXTRA); };
   std::vector<double> own(nall, 1.0);
