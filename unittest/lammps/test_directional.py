@@ -123,7 +123,9 @@ def grains(which):
     text += deck.pair_lines({"style": "pd/ordinary", "lattice": "square", "ratio": 3}, H)
     text += ("run 0\nvariable dx atom 2e-3*x+1e-3*y\nvariable dy atom 1e-3*x-5e-4*y\n"
              "displace_atoms all move v_dx v_dy 0 units box\ncompute e all pe/atom\n"
-             "run 0\nwrite_dump all custom grains.dump id x y c_e modify format float %.17g\n")
+             # (a dump of the run itself: LAMMPS 2021's write_dump refuses a
+             # per-atom energy after the run)
+             "dump d all custom 1 grains.dump id x y c_e\ndump_modify d format float %.17g\nrun 0\n")
     return text
 
 
