@@ -73,7 +73,7 @@ demo: configure
 bench: build
 	FULL=$(FULL) PASSES=$(PASSES) ./bench/run.sh $(LMP)
 
-# Accuracy against cost: the full sweeps (about 95 minutes, one LAMMPS run at
+# Accuracy against cost: the full sweeps (about 105 minutes, one LAMMPS run at
 # a time), the report with its Pareto plots and, at its end, the
 # recommendation table (deck lines per quantity and target) in
 # build/accuracy/report.md
