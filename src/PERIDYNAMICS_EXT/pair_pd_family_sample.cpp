@@ -54,7 +54,8 @@ std::vector<double> PairPD::family_sample_sums(int width,
                                                const std::function<void(const pd_family &, double *)> &add) const
 {
   const int n = atom->ntypes + 1, nlocal = atom->nlocal;
-  const std::vector<bool> &lattice = on_lattice;
+  // (the calibration's, unless no calibration of this style has run yet)
+  const std::vector<bool> lattice = on_lattice.size() == (size_t) n ? on_lattice : lattice_types();
 
   // the sample: per type, the complete families with the lowest keys, from
   // each rank's lowest (key, tag) pairs, as unsigned long long
