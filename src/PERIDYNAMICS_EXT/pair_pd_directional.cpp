@@ -154,12 +154,8 @@ void PairPD::correct_directions(const std::vector<double> &share)
       const double r = unit_direction(xi, n);
       if (!(r > 0.0)) return;
       const double stiff = stiffness_share(weight, r, power);
-      double one[w] = {0.0};
-      add_signatures(n, 1.0, one);
-      for (int k = 0; k < w; k++) {
-        sums[w * i + k] += stiff * vol[j] * one[k];
-        sums[w * j + k] += stiff * vol[i] * one[k];
-      }
+      add_signatures(n, stiff * vol[j], &sums[w * i]);
+      add_signatures(n, stiff * vol[i], &sums[w * j]);
     });
     bonds->sum_to_owners(sums.data(), w);
     for (int i = 0; i < nlocal; i++) {
