@@ -73,12 +73,12 @@ demo: configure
 bench: build
 	FULL=$(FULL) PASSES=$(PASSES) ./bench/run.sh $(LMP)
 
-# Accuracy against cost: the full sweeps (about 105 minutes, one LAMMPS run at
-# a time), the report with its Pareto plots and, at its end, the
+# Accuracy against cost: the full sweeps (two LAMMPS runs side by side, one
+# on each core: about 100 minutes), the report with its Pareto plots and, at its end, the
 # recommendation table (deck lines per quantity and target) in
 # build/accuracy/report.md
 accuracy: build
-	python3 tools/accuracy/run.py --mode full --lmp $(LMP) --exact $(BUILD_DIR)/pd_exact --out $(BUILD_DIR)/accuracy
+	python3 tools/accuracy/run.py --mode full --jobs 2 --lmp $(LMP) --exact $(BUILD_DIR)/pd_exact --out $(BUILD_DIR)/accuracy
 
 # Long runs at the papers' resolutions, with their reference numbers printed;
 # the short accuracy sweeps (under 10 minutes: build/accuracy-short/report.md)

@@ -24,6 +24,14 @@ horizons from the tip. Broken bonds never push (`recontact none`): the
 criteria assume traction-free crack faces, and sliding faces must not
 drag each other.
 
+Dynamic loading ('load': 'dynamic'): after the same first step, K grows
+at a constant rate, G from 0.5 to 3 G_c (K by 1.03 K_c) in 'crossings'
+(40) times the time a bar wave takes across the plate, the grips moving
+at the field's rate and the inside by its equations of motion (fix nve
+at fix pd/timestep's step), until the same reach. How slow is slow
+enough (pd/ordinary energy, 4 spacings, a/h = 50): -66.7, -67.9 and
+-68.2 deg at 20, 40 and 80 crossings, against -68.4 quasi-static.
+
 Sign convention: K_II > 0 moves the upper face (y > 0) in +x relative
 to the lower one; angles are counter-clockwise from +x, the direction of
 the pre-crack, so the maximum tangential stress (MTS, Erdogan-Sih) kink
@@ -64,8 +72,8 @@ On a lattice plate the path is decided by near-ties between bonds: a
 change of the bond weights at round-off, or every particle moved by a
 millionth of a spacing, moves the angle by several degrees at 4
 spacings and a/h = 100-200. One run is one sample of that scatter: the
-full sweep runs three such perturbed copies ('perturb') of the 4-spacing
-plates, and the recommendation counts them with the plate."""
+full sweep runs three such perturbed copies ('perturb') of the 4-, 5-
+and 6-spacing plates, and the recommendation counts them with the plate."""
 import math
 import os
 import deck
@@ -80,6 +88,7 @@ H = 5.0e-4              # spacing (m)
 THRESHOLD = 0.2         # damage growth that marks an atom beside the new crack
 R_IN, R_OUT, R_STOP = 1.0, 4.0, 4.0     # horizons from the tip
 G0, DG, NSTEPS = 0.5, 0.05, 120         # load: G/G_c at step 1, per step, most steps
+G_END, CROSSINGS = 3.0, 40      # dynamic load: G/G_c at the ramp's end, its time in wave crossings
 TOL = 1e-4
 
 
@@ -130,9 +139,12 @@ def cases(mode):
     100 and 200, and, at a/h = 25, hex, three jittered plates and
     K_II/K_I = 1, the energy law's uniform profile at 4 spacings, a/h =
     100 and 200, and three copies of each law's 4-spacing plates at a/h =
-    100 and 200, mode II and K_II/K_I = 1, perturbed by 1e-6 spacings,
-    and the stretch law's 5-spacing plate and three copies at a/h = 100
-    and 200 (about 60 minutes)."""
+    100 and 200, mode II and K_II/K_I = 1, perturbed by 1e-6 spacings;
+    with three such copies each, at a/h = 100 and 200: the stretch law's
+    5-spacing plate, the energy law's 6-spacing plate in both modes, and
+    both dynamically loaded in mode II; three jittered plates of each law
+    at 6 spacings, a/h = 100 and 200 (about 2.8 hours of runs, 85
+    minutes on two cores)."""
     if mode == "smoke":
         return [{"style": "pd/ordinary", "law": "energy", "lattice": "square", "ratio": 3, "n": n, "mix": "II"}
                 for n in (25, 50)]
@@ -168,6 +180,28 @@ def cases(mode):
             for seed in (None, 1, 2, 3):
                 case = {"style": "pd/bond", "law": "stretch", "lattice": "square", "ratio": 5, "n": n, "mix": "II"}
                 out.append(case if seed is None else dict(case, perturb=1e-6, seed=seed))
+        # the energy law at 6 spacings, where its path holds to 3 degrees
+        # of MTS in both modes over the copies
+        for mix in ("II", 1.0):
+            for n in (100, 200):
+                for seed in (None, 1, 2, 3):
+                    case = {"style": "pd/ordinary", "law": "energy", "lattice": "square", "ratio": 6, "n": n,
+                            "mix": mix}
+                    out.append(case if seed is None else dict(case, perturb=1e-6, seed=seed))
+        # the jittered plates at 6 spacings: no lattice direction to lock on
+        for style, law in laws:
+            for n in (100, 200):
+                for seed in (4711, 1, 2):
+                    out.append({"style": style, "law": law, "lattice": "square-jitter", "ratio": 6, "n": n,
+                                "mix": "II", "seed": seed})
+        # dynamic loading (slow: G from 0.5 to 3 G_c in 40 wave crossings) at
+        # the settings that hold to 3 degrees quasi-static
+        for style, law, ratio in (("pd/bond", "stretch", 5), ("pd/ordinary", "energy", 6)):
+            for n in (100, 200):
+                for seed in (None, 1, 2, 3):
+                    case = {"style": style, "law": law, "lattice": "square", "ratio": ratio, "n": n, "mix": "II",
+                            "load": "dynamic"}
+                    out.append(case if seed is None else dict(case, perturb=1e-6, seed=seed))
         # the 4-spacing plates perturbed by 1e-6 spacings: the path's
         # scatter under a change no measurement of the plate could see
         for style, law in laws:
@@ -188,15 +222,24 @@ def group(case):
 
 
 def family(case):
-    return f"{case['style']} {case['law']}{deck.profile_words(case)} {case['lattice']} a/h {case['n']}" + \
-        (f" perturbed {case['perturb']:g}" if "perturb" in case else "") + \
+    return curve(case) + (f" perturbed {case['perturb']:g}" if "perturb" in case else "") + \
         (f" seed {case['seed']}" if "seed" in case else "")
+
+
+def curve(case):
+    """The plots' curve: a plate's perturbed copies and a jittered plate's
+    seeds are points of it, not curves of their own."""
+    return f"{case['style']} {case['law']}{deck.profile_words(case)} {case['lattice']} a/h {case['n']}" + \
+        (" dynamic" if case.get("load") == "dynamic" else "")
 
 
 def setting(case):
     """The measured setting as deck keys, the plate's size as a comment."""
     checked = f" or more (its path checked against {case['checked']})" if case.get("checked") else ""
-    return dict(case, h=H, recontact="none", note=f"crack length {case['n']} spacings{checked}")
+    crossings = case.get("crossings", CROSSINGS)
+    load = (f"; dynamic: G grows from 0.5 to 3 G_c in {crossings} wave crossings of the plate"
+            if case.get("load") == "dynamic" else "")
+    return dict(case, h=H, recontact="none", note=f"crack length {case['n']} spacings{checked}{load}")
 
 
 # A path within this of one of the plate's lattice directions (square:
@@ -297,8 +340,11 @@ def plate(case):
              "compute reach all reduce max v_far\n"
              f"fix adr inner pd/adr tol {TOL!r}\nfix 2d all enforce2d\n"
              "variable res equal f_adr[1]\n"
-             f"fix halt all halt 1 v_res < {TOL!r} error continue message no\n"
-             "thermo_style custom step f_adr[1] c_reach\nthermo 5000\n"
+             f"fix halt all halt 1 v_res < {TOL!r} error continue message no\n")
+    final = "write_dump all custom kink.dump id f_ref[1] f_ref[2] v_dd modify format float %.10g\n"
+    if case.get("load") == "dynamic":
+        return text + ramp(case, delta, ci, cii, kc, E, mat["density"]) + final
+    text += ("thermo_style custom step f_adr[1] c_reach\nthermo 5000\n"
              f"variable k loop {NSTEPS}\n"
              "label step\n"
              "displace_atoms all move v_dx v_dy 0 units box\n"
@@ -307,9 +353,44 @@ def plate(case):
              f"print \"KINK $k $(v_K/{kc!r}:%.4f) $(c_reach/{delta!r}:%.3f) $(f_adr[5]) $(f_adr[1]:%.2e)\"\n"
              f"if \"$(c_reach) > {R_STOP * delta!r}\" then \"jump SELF done\"\n"
              "next k\njump SELF step\n"
-             "label done\n"
-             "write_dump all custom kink.dump id f_ref[1] f_ref[2] v_dd modify format float %.10g\n")
-    return text
+             "label done\n")
+    return text + final
+
+
+def ramp(case, delta, ci, cii, kc, E, rho):
+    """The dynamic load: step 1 as the quasi-static one (the K-field at G0,
+    relaxed), then K grows at a constant rate, G from G0 to G_END in
+    'crossings' times the time a bar wave takes across the plate; the grips
+    follow the K-field at its rate, the inside the equations of motion (fix
+    nve, the step from fix pd/timestep), until new damage reaches R_STOP
+    horizons from the tip."""
+    crossings = case.get("crossings", CROSSINGS)
+    span = crossings * 2 * case["n"] * H / math.sqrt(E / rho)
+    k0, k1 = math.sqrt(G0) * kc, math.sqrt(G_END) * kc
+    kdot = (k1 - k0) / span
+    row = f"$(v_Kt/{kc!r}:%.4f) $(c_reach/{delta!r}:%.3f) $(step) 0"
+    return ("thermo_style custom step f_adr[1] c_reach\nthermo 5000\n"
+            "variable k equal 1\n"
+            "displace_atoms all move v_dx v_dy 0 units box\n"
+            "run 50000\n"
+            "run 0 post no\n"
+            "unfix halt\nunfix adr\nvelocity all set 0 0 0\n"
+            "variable t0 equal $(time)\n"
+            f"variable Kt equal {k0!r}+{kdot!r}*(time-v_t0)\n"
+            f"print \"KINK 1 {row}\"\n"
+            # the grips at the K-field's rate: no force on them, their
+            # velocity kept (fix move would forbid fix pd/timestep)
+            f"variable gvx atom {kdot!r}*({ci!r}*v_uxI+{cii!r}*v_uxII)\n"
+            f"variable gvy atom {kdot!r}*({ci!r}*v_uyI+{cii!r}*v_uyII)\n"
+            "velocity grips set v_gvx v_gvy 0 units box\n"
+            "fix grip grips setforce 0 0 0\n"
+            "fix nve all nve\nfix ts all pd/timestep\n"
+            f"variable done equal (c_reach>{R_STOP * delta!r})+(time>v_t0+{span!r})\n"
+            "fix stop all halt 200 v_done > 0.5 error continue message no\n"
+            f"fix rows all print 200 \"KINK 2 {row}\" screen yes\n"
+            "thermo_style custom step time dt c_reach\nthermo 2000\n"
+            "run 100000000\n"
+            f"print \"KINK 3 {row}\"\n")
 
 
 def read_dump(path):

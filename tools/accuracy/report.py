@@ -76,7 +76,7 @@ def _points(rows, primary, cost):
 def _curves(pts, order_key):
     curves = {}
     for c, e, r in sorted(pts, key=lambda p: order_key(p[2]["case"])):
-        curves.setdefault(r["family"], []).append((c, e))
+        curves.setdefault(r.get("curve", r["family"]), []).append((c, e))
     return curves
 
 

@@ -3,7 +3,7 @@
 DIR/results.json, DIR/<name>.csv and DIR/report.md with its plots.
 
   run.py --mode smoke|short|full --lmp PATH --out DIR [--exact PATH]
-         [--only name,name] [--report-only]
+         [--only name,name] [--jobs N] [--report-only]
 
 Each module has cases(mode) -> [setting dicts] and measure(case, lmp,
 workdir) -> {metric: value, 'seconds': Loop time, 'particle_steps': n}
@@ -11,7 +11,8 @@ workdir) -> {metric: value, 'seconds': Loop time, 'particle_steps': n}
 when there is no pd_exact binary), and optionally NAME, TITLE, PRIMARY
 (the error metric the report ranks by; defaults: the file's name, the
 docstring's first line, 'err' or PRIMARY below), family(case)
-(the curve of a case), group(case) (recommendations are made per group),
+(the curve of a case), curve(case) (the plots' curve when it is not the
+family), group(case) (recommendations are made per group),
 COST ('per_particle_step', the default, or 'wall'), ERROR_UNIT and
 TARGETS (the target errors of the recommendations, in the error's unit;
 default pareto.TARGETS, relative errors) and QUADRATURE (True, or a
@@ -19,6 +20,7 @@ function of the case that says which: the driver adds 'quadrature
 partial' copies of the cases when the binary accepts that pair_style
 keyword)."""
 import argparse
+import concurrent.futures
 import csv
 import datetime
 import importlib
@@ -108,6 +110,9 @@ def main():
                     help="the pd_exact binary (FFTW lattice solution) for q_waves")
     ap.add_argument("--out", required=True)
     ap.add_argument("--only", default="", help="comma-separated quantity names")
+    ap.add_argument("--jobs", type=int, default=1,
+                    help="cases run side by side, each one LAMMPS process on one core (their costs then carry "
+                         "what the others take of the shared caches and memory)")
     ap.add_argument("--report-only", action="store_true", help="rewrite the report from DIR/results.json")
     a = ap.parse_args()
     out = os.path.abspath(a.out)
@@ -149,13 +154,16 @@ def main():
              "targets": list(getattr(mod, "TARGETS", pareto.TARGETS)),
              "doc": (mod.__doc__ or "").strip(), "rows": rows}
         results["quantities"][name] = q
-        for k, case in enumerate(cases):
+        def one(k):
+            case = cases[k]
             wd = os.path.join(out, "work", name, f"{k:03d}")
             os.makedirs(wd, exist_ok=True)
             t = time.time()
             row = {"case": case, "family": family(mod, case)}
             if hasattr(mod, "group"):
                 row["group"] = mod.group(case)
+            if hasattr(mod, "curve"):
+                row["curve"] = mod.curve(case)
             try:
                 m = mod.measure(case, lmp, a.exact, wd) if needs_exact else mod.measure(case, lmp, wd)
                 row["metrics"] = m
@@ -164,9 +172,13 @@ def main():
                 row["error"] = report.scrub(f"{type(err).__name__}: {err}")
                 msg = "FAILED " + row["error"]
                 traceback.print_exc()
-            rows.append(row)
             print(f"[{time.time() - t0:7.1f} s] {name} {k + 1}/{len(cases)} {row['family']} "
                   f"ratio {case.get('ratio', '')}: {msg} ({time.time() - t:.1f} s)", flush=True)
+            return row
+
+        # (threads: each case waits on its own LAMMPS process)
+        with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
+            rows += pool.map(one, range(len(cases)))
         if hasattr(mod, "note"):
             q["note"] = mod.note(rows)
         write_csv(os.path.join(out, f"{name}.csv"), rows)
