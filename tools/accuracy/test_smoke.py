@@ -45,8 +45,6 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-import importlib  # noqa: E402
-import pareto    # noqa: E402   (the default targets)
 import report    # noqa: E402   (the plots' file names)
 LMP = os.environ.get("PDEXT_LMP") or os.path.join(HERE, "..", "..", "build", "lmp")
 OUT = os.environ.get("PDEXT_ACCURACY_OUT") or tempfile.mkdtemp(prefix="pdacc-")
@@ -92,7 +90,7 @@ for name in sorted(qs):
             check(f"{name}: report shows {os.path.basename(png)}", f"]({os.path.basename(png)})" in text)
     groups = {r.get("group") for r in rows}
     n_rec = sum(1 for l in rec if l.startswith(f"| {name} | ") or l.startswith(f"| {name} ("))
-    targets = len(getattr(importlib.import_module(f"q_{name}"), "TARGETS", pareto.TARGETS))
+    targets = len(qs[name]["targets"])
     check(f"{name}: a recommendation row per target and group", n_rec == targets * len(groups),
           f"{n_rec} rows, {len(groups)} group(s), {targets} targets")
 

@@ -12,7 +12,8 @@ setting: horizon 3 spacings, crack 25 spacings (about 2 s a run).
   degrees of it. At 3 spacings and a crack of 25 the accuracy sweep
   measures the energy law 7-8 degrees short of MTS in mode II and 1.6
   off at K_II = K_I; one run is one sample of the lattice's near-ties
-  (a few degrees at 4 spacings), so the bound is not tighter."""
+  (a few degrees at 4 spacings), so the bound is not tighter.
+- A wrong variable is refused with an ERROR that names it."""
 import os
 import re
 import sys
@@ -46,4 +47,8 @@ for load in ("quasistatic", "dynamic"):
         check(f"{name}: turns to the criterion's side", theta < 0.0, f"{theta}")
         check_le(f"{name}: within 12 degrees of MTS", abs(theta - q_kink.mts_angle(ratio)), 12.0,
                  "3 spacings, a/h 25: the sweep's 7-8 degrees, one sample of the near-ties")
+for bad, named in (({"load": "static"}, "-var load static"), ({"psi": 0}, "-var psi 0"),
+                   ({"n": 8}, "-var n 8")):
+    out, _ = run(DECK, workdir(), as_is=True, expect_error=True, variables=dict(bad, images=0))
+    check(f"refused: {named}", f"ERROR: {named}" in out, "" if f"ERROR: {named}" in out else out[-300:])
 finish()
