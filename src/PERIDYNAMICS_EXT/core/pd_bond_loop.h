@@ -177,6 +177,24 @@ PD_INLINE void pd_atom_virial(pd_tally *t, const double *restrict x, const doubl
   t->virial[5] += x[1] * F[2];
 }
 
+/* pd_tally_atom_virial with xx yy zz xy as one 4-wide add onto each end
+ * (the far end's six loads, adds and stores one by one were most of a
+ * per-atom virial step): the same numbers. */
+PD_INLINE void pd_tally_atom_virial4(double *restrict vatom, double *restrict own, int j,
+                                     const double r[3], const double F[3])
+{
+  double w[6];
+  pd_atom_virial_share(r, F, w);
+  const pd_sum4 w4 = pd_sum4_load(w);
+  double *restrict vj = vatom + 6 * (ptrdiff_t) j;
+  pd_sum4_store(own, pd_sum4_add(pd_sum4_load(own), w4));
+  pd_sum4_store(vj, pd_sum4_add(pd_sum4_load(vj), w4));
+  own[4] += w[4];
+  own[5] += w[5];
+  vj[4] += w[4];
+  vj[5] += w[5];
+}
+
 PD_INLINE double pd_lanes_sum(const double *lane)
 {
   return (lane[0] + lane[1]) + (lane[2] + lane[3]);
@@ -234,7 +252,7 @@ pd_force_bond(const pd_bond_view *restrict b, const int *restrict type, int trow
     const double r[3] = {-bd->d[0], -bd->d[1], -bd->d[2]};
     const double vv = vi * vj;
     const double F[3] = {vv * fij[0], vv * fij[1], vv * fij[2]};
-    pd_tally_atom_virial(tally->vatom, tally->own_virial, j, r, F);
+    pd_tally_atom_virial4(tally->vatom, tally->own_virial, j, r, F);
   }
   if (tallied && !in_lane)
     pd_tally_energy(&re->total[lane], &re->owner[lane], tally->eatom, j, vi, vj,
@@ -447,7 +465,7 @@ PD_NOINLINE void pd_chunk_atom_virial(double *restrict vatom, double *restrict o
     const double r[3] = {xi[0] - x[3 * j], xi[1] - x[3 * j + 1], xi[2] - x[3 * j + 2]};
     const double vv = vi * vol[j];
     const double F[3] = {vv * g[k], vv * g[PD_CHUNK + k], vv * g[2 * PD_CHUNK + k]};
-    pd_tally_atom_virial(vatom, own, j, r, F);
+    pd_tally_atom_virial4(vatom, own, j, r, F);
   }
   for (int c = 0; c < 6; c++) own_virial[c] = own[c];
 }

@@ -100,7 +100,7 @@ void pd_intact_volume(const pd_bond_view *b, const double *vol, double *m);
  * is left at zero;
  * vatom: per-atom virial over owned and ghost atoms (6 each, xx yy zz xy
  * xz yz: LAMMPS's), or NULL: each pair's (x_i - x_j) (x) F_ij, half to
- * each end (pd_tally_atom_virial), so that the atoms' sum is the global
+ * each end (pd_atom_virial_share), so that the atoms' sum is the global
  * virial and compute stress/atom / V_i is a stress;
  * own_virial: a bond loop's row tally keeps its owner's share there, added
  * to vatom at the row's end (pd_bond_loop.h). */
@@ -113,17 +113,27 @@ typedef struct pd_tally {
   double own_virial[6];
 } pd_tally;
 
-/* A pair's (x_i - x_j) (x) F_ij, r = x_i - x_j and F the true force on i,
- * half onto each end's per-atom virial: i's share onto own (6), j's onto
- * vatom. Symmetrized: a force not along the pair (pd/corr classical) has
- * no symmetric tensor of its own, and the global virial takes the
- * symmetric part too. */
+/* Each end's half of a pair's (x_i - x_j) (x) F_ij, r = x_i - x_j and F
+ * the true force on i, as w (xx yy zz xy xz yz). Symmetrized: a force not
+ * along the pair (pd/corr classical) has no symmetric tensor of its own,
+ * and the global virial takes the symmetric part too. */
+static inline void pd_atom_virial_share(const double r[3], const double F[3], double w[6])
+{
+  w[0] = 0.5 * r[0] * F[0];
+  w[1] = 0.5 * r[1] * F[1];
+  w[2] = 0.5 * r[2] * F[2];
+  w[3] = 0.25 * (r[0] * F[1] + r[1] * F[0]);
+  w[4] = 0.25 * (r[0] * F[2] + r[2] * F[0]);
+  w[5] = 0.25 * (r[1] * F[2] + r[2] * F[1]);
+}
+
+/* The pair's shares onto i's per-atom virial (own, 6) and j's (in vatom);
+ * the bond loops' 4-wide form is pd_bond_loop.h's. */
 static inline void pd_tally_atom_virial(double *vatom, double *own, int j,
                                         const double r[3], const double F[3])
 {
-  const double w[6] = {0.5 * r[0] * F[0], 0.5 * r[1] * F[1], 0.5 * r[2] * F[2],
-                       0.25 * (r[0] * F[1] + r[1] * F[0]), 0.25 * (r[0] * F[2] + r[2] * F[0]),
-                       0.25 * (r[1] * F[2] + r[2] * F[1])};
+  double w[6];
+  pd_atom_virial_share(r, F, w);
   for (int c = 0; c < 6; c++) {
     own[c] += w[c];
     vatom[6 * (ptrdiff_t) j + c] += w[c];

@@ -27,6 +27,7 @@ PD_INLINE pd_sum4 pd_sum4_make(double a0, double a1, double a2, double a3)
 }
 /* acc + s a */
 PD_INLINE pd_sum4 pd_sum4_axpy4(pd_sum4 acc, double s, pd_sum4 a) { return acc + s * a; }
+PD_INLINE pd_sum4 pd_sum4_add(pd_sum4 a, pd_sum4 b) { return a + b; }
 /* four 64-bit integers: shuffle indices, compare masks */
 typedef long long pd_sum4_lanes __attribute__((vector_size(32)));
 /* lanes i0 .. i3 of a and b together (0-3 a's, 4-7 b's) */
@@ -47,6 +48,11 @@ PD_INLINE pd_sum4 pd_sum4_axpy4(pd_sum4 acc, double s, pd_sum4 a)
 {
   for (int c = 0; c < 4; c++) acc.v[c] += s * a.v[c];
   return acc;
+}
+PD_INLINE pd_sum4 pd_sum4_add(pd_sum4 a, pd_sum4 b)
+{
+  for (int c = 0; c < 4; c++) a.v[c] += b.v[c];
+  return a;
 }
 #endif
 
