@@ -1,8 +1,8 @@
 /* The Seth-Hill bond strain's forms (pd_seth_hill.h) against the
  * definition eps = (c^m - 1)/(2m), eps_0 = log(c)/2 with c = |Y|^2/|xi|^2,
  * evaluated in long double from the same |Y|^2 and |xi|: m = 1/2, m = 0
- * (pd_log of c), the negative integers (a polynomial in 1/c, no square
- * root) and an order in general (libm). The strains span 1e-12 to 0.6 in
+ * (pd_log_ratio of |Y|^2 and |xi|^2), the negative integers (a polynomial
+ * in 1/c, no square root) and an order in general (libm). The strains span 1e-12 to 0.6 in
  * tension and compression, the bonds' range. Tolerance: 8 ulp of
  * (1 + |eps|): the rounding of |xi|^2 alone leaves 1 ulp of 1 in c - 1, so
  * a small strain is known to that absolute error, a large one to a few ulp
@@ -72,7 +72,7 @@ int main(void)
     int kind;
     double m;
   } cases[] = {
-      {"m = 0 (pd_log of |Y|^2/|xi|^2)", PD_ORDER_LOG, 0.0},
+      {"m = 0 (pd_log_ratio of |Y|^2 and |xi|^2)", PD_ORDER_LOG, 0.0},
       {"m = -1 (reciprocal)", PD_ORDER_RECIPROCAL, -1.0},
       {"m = -2 (reciprocal)", PD_ORDER_RECIPROCAL, -2.0},
       {"m = -3 (reciprocal)", PD_ORDER_RECIPROCAL, -3.0},

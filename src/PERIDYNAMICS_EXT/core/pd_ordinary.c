@@ -60,7 +60,7 @@ ORDER_HOOKS(PD_ORDER_ANY, any)
 
 /* m = 0 and the orders other than 1/2 and the negative integers, with a
  * strain scratch: the dilatation pass keeps each bond's strain, the force
- * pass reads it back (m = 0: one pd_log per bond and step instead of two,
+ * pass reads it back (m = 0: one logarithm per bond and step instead of two,
  * 1.33x faster on the benchmark block; the others: one log and one
  * expm1). m = 1/2 and the negative integers compute theirs in both
  * passes, with no log. */
@@ -75,17 +75,22 @@ PD_INLINE double strain_cached(void *st, const pd_bond *bd)
   return ((const pd_ordinary_state *) st)->strain[bd->idx];
 }
 
-/* m = 1/2 with one B for all atoms: one gather less per bond (1.07x at
- * 32^3, 1.1x at 64^3) */
+/* m = 1/2 and m = 0 (its strains kept) with one B for all atoms: one
+ * gather less per bond (m = 1/2: 1.07x at 32^3, 1.1x at 64^3) */
 PD_INLINE pd_bond_force force_half_uniform(void *st, const pd_bond *bd, double eps)
 {
   return ordinary_bond(PD_ORDER_HALF, 1, (const pd_ordinary_state *) st, bd, eps);
+}
+PD_INLINE pd_bond_force force_log_uniform(void *st, const pd_bond *bd, double eps)
+{
+  return ordinary_bond(PD_ORDER_LOG, 1, (const pd_ordinary_state *) st, bd, eps);
 }
 
 PD_DEFINE_KERNELS(half, strain_half, force_half)
 PD_DEFINE_KERNELS(half_uniform, strain_half, force_half_uniform)
 PD_DEFINE_KERNELS(log, strain_log, force_log)
 PD_DEFINE_KERNELS(log_cached, strain_cached, force_log)
+PD_DEFINE_KERNELS(log_cached_uniform, strain_cached, force_log_uniform)
 PD_DEFINE_KERNELS(reciprocal, strain_reciprocal, force_reciprocal)
 PD_DEFINE_KERNELS(any, strain_any, force_any)
 PD_DEFINE_KERNELS(any_cached, strain_cached, force_any)
@@ -98,19 +103,19 @@ static int kept(const pd_ordinary_state *st)
 
 void pd_ordinary_forces(const pd_loop *L, const pd_ordinary_state *st)
 {
-  /* [kind][kept] */
-  static const pd_kernel(*const table[PD_ORDER_KINDS][2])[6] = {
-      [PD_ORDER_HALF] = {half_kernels, half_kernels},
-      [PD_ORDER_LOG] = {log_kernels, log_cached_kernels},
-      [PD_ORDER_RECIPROCAL] = {reciprocal_kernels, reciprocal_kernels},
-      [PD_ORDER_ANY] = {any_kernels, any_cached_kernels},
+  /* [kind][kept][uniform B] */
+  static const pd_kernel(*const table[PD_ORDER_KINDS][2][2])[6] = {
+      [PD_ORDER_HALF] = {{half_kernels, half_uniform_kernels}, {half_kernels, half_uniform_kernels}},
+      [PD_ORDER_LOG] = {{log_kernels, log_kernels}, {log_cached_kernels, log_cached_uniform_kernels}},
+      [PD_ORDER_RECIPROCAL] = {{reciprocal_kernels, reciprocal_kernels},
+                               {reciprocal_kernels, reciprocal_kernels}},
+      [PD_ORDER_ANY] = {{any_kernels, any_kernels}, {any_cached_kernels, any_cached_kernels}},
   };
   const int kind = pd_order_kind(st->order);
   pd_loop l = *L;
   l.energy_scale = st->ab + 1;    /* B, interleaved with A */
   l.energy_scale_stride = 2;
-  pd_run_kernel(kind == PD_ORDER_HALF && st->uniform_b ? half_uniform_kernels : table[kind][kept(st)],
-                &l, (void *) st);
+  pd_run_kernel(table[kind][kept(st)][st->uniform_b != 0], &l, (void *) st);
 }
 
 PD_INLINE void weighted_strain(void *st, const pd_bond *bd, double eps, double *t)

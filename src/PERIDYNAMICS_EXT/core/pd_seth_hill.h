@@ -64,7 +64,7 @@ pd_bond_strain(int kind, double m, const pd_bond *bd)
   /* times 1/|xi|, a divide that need not wait for |Y| (through
    * pd_bond_inverse, it would: the dilatation pass is then slower) */
   if (kind == PD_ORDER_HALF) return (bd->len - bd->r0) * (1.0 / bd->r0);
-  if (kind == PD_ORDER_LOG) return 0.5 * pd_log(bd->len2 * (1.0 / (bd->r0 * bd->r0)));
+  if (kind == PD_ORDER_LOG) return 0.5 * pd_log_ratio(bd->len2, bd->r0 * bd->r0);
   if (kind == PD_ORDER_RECIPROCAL) return pd_reciprocal_strain(m, bd, &cm);
   return expm1(2.0 * m * pd_bond_log_strain(bd)) / (2.0 * m);
 }
