@@ -48,8 +48,8 @@ SPEEDUPS = [
 
 # (effect, style, baseline, bar): cost = time of style / time of baseline
 EFFECTS = [
-    ("nonlinear strain", "pd_ordinary_m0", "pd_ordinary", None),
-    ("nonlinear strain", "pd_ordinary_m-1", "pd_ordinary", None),
+    ("nonlinear strain", "pd_ordinary_m0", "pd_ordinary", 1.3),
+    ("nonlinear strain", "pd_ordinary_m-1", "pd_ordinary", 1.5),
     ("failure", "pd_bond_fail_stretch", "pd_bond", 1.2),
     ("failure", "pd_bond_legacy_fail", "pd_bond_legacy", 1.2),
     ("failure", "pd_bond_legacy_fail_alpha", "pd_bond_legacy", 1.2),
