@@ -39,9 +39,10 @@ PD_INLINE double pd_from_bits(uint64_t b)
   return x;
 }
 
-/* the exponent of a positive normal double's bits, unbiased, as a double
- * (2^52 + the biased one, less 2^52: exact, and no conversion of a 64-bit
- * integer, which AVX2 has not: the loop would stay scalar there) */
+/* the exponent of a positive normal double's bits, as a double: 2^52 plus
+ * the biased exponent, by its bits, less 2^52 and the bias (exact, and no
+ * conversion of a 64-bit integer, which AVX2 has not: the loop would stay
+ * scalar there) */
 PD_INLINE double pd_exponent(uint64_t bits)
 {
   return pd_from_bits(0x4330000000000000ULL | ((bits >> 52) & 0x7ff)) - (4503599627370496.0 + 1023.0);
