@@ -90,6 +90,9 @@ R_IN, R_OUT, R_STOP = 1.0, 4.0, 4.0     # horizons from the tip
 G0, DG, NSTEPS = 0.5, 0.05, 120         # load: G/G_c at step 1, per step, most steps
 G_END, CROSSINGS = 3.0, 40      # dynamic load: G/G_c at the ramp's end, its time in wave crossings
 TOL = 1e-4
+# one load step: the grips' increment of the K-field, relaxed by fix pd/adr
+# (fix halt ends the run at TOL)
+LOAD_STEP = "displace_atoms all move v_dx v_dy 0 units box\nrun 50000\nrun 0 post no\n"
 
 
 def mts_angle(ratio):
@@ -233,11 +236,15 @@ def curve(case):
         (" dynamic" if case.get("load") == "dynamic" else "")
 
 
+def crossings(case):
+    """The dynamic ramp's time in wave crossings of the plate."""
+    return case.get("crossings", CROSSINGS)
+
+
 def setting(case):
     """The measured setting as deck keys, the plate's size as a comment."""
     checked = f" or more (its path checked against {case['checked']})" if case.get("checked") else ""
-    crossings = case.get("crossings", CROSSINGS)
-    load = (f"; dynamic: G grows from 0.5 to 3 G_c in {crossings} wave crossings of the plate"
+    load = (f"; dynamic: G grows from 0.5 to 3 G_c in {crossings(case)} wave crossings of the plate"
             if case.get("load") == "dynamic" else "")
     return dict(case, h=H, recontact="none", note=f"crack length {case['n']} spacings{checked}{load}")
 
@@ -340,16 +347,13 @@ def plate(case):
              "compute reach all reduce max v_far\n"
              f"fix adr inner pd/adr tol {TOL!r}\nfix 2d all enforce2d\n"
              "variable res equal f_adr[1]\n"
-             f"fix halt all halt 1 v_res < {TOL!r} error continue message no\n")
+             f"fix halt all halt 1 v_res < {TOL!r} error continue message no\n"
+             "thermo_style custom step f_adr[1] c_reach\nthermo 5000\n")
     final = "write_dump all custom kink.dump id f_ref[1] f_ref[2] v_dd modify format float %.10g\n"
     if case.get("load") == "dynamic":
         return text + ramp(case, delta, ci, cii, kc, E, mat["density"]) + final
-    text += ("thermo_style custom step f_adr[1] c_reach\nthermo 5000\n"
-             f"variable k loop {NSTEPS}\n"
-             "label step\n"
-             "displace_atoms all move v_dx v_dy 0 units box\n"
-             "run 50000\n"
-             "run 0 post no\n"
+    text += (f"variable k loop {NSTEPS}\n"
+             "label step\n" + LOAD_STEP +
              f"print \"KINK $k $(v_K/{kc!r}:%.4f) $(c_reach/{delta!r}:%.3f) $(f_adr[5]) $(f_adr[1]:%.2e)\"\n"
              f"if \"$(c_reach) > {R_STOP * delta!r}\" then \"jump SELF done\"\n"
              "next k\njump SELF step\n"
@@ -364,16 +368,11 @@ def ramp(case, delta, ci, cii, kc, E, rho):
     follow the K-field at its rate, the inside the equations of motion (fix
     nve, the step from fix pd/timestep), until new damage reaches R_STOP
     horizons from the tip."""
-    crossings = case.get("crossings", CROSSINGS)
-    span = crossings * 2 * case["n"] * H / math.sqrt(E / rho)
+    span = crossings(case) * 2 * case["n"] * H / math.sqrt(E / rho)
     k0, k1 = math.sqrt(G0) * kc, math.sqrt(G_END) * kc
     kdot = (k1 - k0) / span
     row = f"$(v_Kt/{kc!r}:%.4f) $(c_reach/{delta!r}:%.3f) $(step) 0"
-    return ("thermo_style custom step f_adr[1] c_reach\nthermo 5000\n"
-            "variable k equal 1\n"
-            "displace_atoms all move v_dx v_dy 0 units box\n"
-            "run 50000\n"
-            "run 0 post no\n"
+    return ("variable k equal 1\n" + LOAD_STEP +
             "unfix halt\nunfix adr\nvelocity all set 0 0 0\n"
             "variable t0 equal $(time)\n"
             f"variable Kt equal {k0!r}+{kdot!r}*(time-v_t0)\n"
