@@ -32,7 +32,8 @@ def best_a(points, p, vbl):
 
 
 def fit(points):
-    """points: [(v, v_r)]; returns (a, p, v_bl, rms of the residuals)."""
+    """points: [(v, v_r)] of decided cases (v_r 0: stopped); returns
+    (a, p, v_bl, rms of the residuals, (fastest stop, slowest perforation))."""
     stopped = [v for v, r in points if r <= 0.0]
     through = [v for v, r in points if r > 0.0]
     if not through:
@@ -53,6 +54,18 @@ def fit(points):
         v0, v1, p0, p1 = max(lo, vbl - dv), min(hi, vbl + dv), max(1.0, p - dp), min(8.0, p + dp)
     sse, a, p, vbl = best
     return a, p, vbl, (sse / len(points)) ** 0.5, (lo, hi)
+
+
+def read_cases(src):
+    """A results.csv's decided cases [(v, v_r)] and its undecided impact
+    velocities: a case that ran out of time with the sphere still moving
+    down (through -1) says neither "stopped" nor "perforated", so it is
+    left out of the fit, and named."""
+    with open(src, newline="") as f:
+        rows = list(csv.DictReader(f))
+    undecided = sorted(float(r["v"]) for r in rows if float(r["through"]) < 0)
+    points = sorted((float(r["v"]), float(r["vres"])) for r in rows if float(r["through"]) >= 0)
+    return points, undecided
 
 
 def picture(points, a, p, vbl, png):
@@ -84,8 +97,10 @@ plot '-' using 1:2 with points pt 7 ps 1.5 title 'cases (pd/ordinary, energy law
 def main(argv):
     src = argv[1] if len(argv) > 1 else os.path.join("campaign.out", "results.csv")
     png = argv[2] if len(argv) > 2 else "ballistic_limit.png"
-    with open(src, newline="") as f:
-        points = sorted((float(row["v"]), float(row["vres"])) for row in csv.DictReader(f))
+    points, undecided = read_cases(src)
+    if undecided:
+        print(f"ballistic_limit: left out, undecided at the case's tmax (raise it): "
+              f"{', '.join(f'{v:g}' for v in undecided)} m/s")
     a, p, vbl, rms, (lo, hi) = fit(points)
     print(f"ballistic_limit: {len(points)} cases from {src}")
     for v, r in points:

@@ -4,10 +4,12 @@ at the example's impact velocities give back v_bl within 2 m/s (the
 grid's resolution after six refinements of a 20 m/s bracket is far finer;
 2 m/s is half a percent), p within 2% and a within 1%; with 3 m/s of noise
 on each point v_bl stays within the bracket of the cases that stopped and
-perforated. Needs no LAMMPS."""
+perforated. A case undecided at its time limit (through -1) is left out
+of the fit and named. Needs no LAMMPS."""
 import os
 import random
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "../../examples/ballistic-limit"))
@@ -35,4 +37,10 @@ try:
     check("no perforation is refused with a message", False)
 except SystemExit as e:
     check("no perforation is refused with a message", "no case perforated" in str(e), str(e))
+with tempfile.NamedTemporaryFile("w", suffix=".csv", delete=False) as f:
+    f.write("v,vres,through,broken,energy\n300,0,0,1,1\n340,0,-1,1,1\n320,12.5,1,1,1\n")
+points, undecided = bl.read_cases(f.name)
+os.unlink(f.name)
+check("an undecided case is left out of the fit", points == [(300.0, 0.0), (320.0, 12.5)], str(points))
+check("... and named", undecided == [340.0], str(undecided))
 finish()
