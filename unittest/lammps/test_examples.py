@@ -1,0 +1,146 @@
+"""The short examples print what their READMEs say they print.
+
+Each example runs as its run.sh runs it, from a copy of its folder beside
+a link to potentials/ (so its relative paths hold and the source tree
+stays clean). Then every number a README states about it is compared with
+the run's:
+- lines quoted as printed (a README's output block, a reference log):
+  each is paired with the printed line of the same words (by its first
+  number where several have them, as the load steps' rows) and compared
+  number by number;
+- numbers in prose (the example's README and the top README's table of
+  examples): a pattern in the README and one in the output.
+
+Tolerance: 1% of the stated value, and at least half a unit of its last
+stated digit. A build of this source reproduces these numbers to the bit,
+on LAMMPS 4 Jul 2026 and 29 Sep 2021 alike; broken-bond counts and crack
+paths follow round-off, which another compiler or vector width changes,
+so 1% leaves room for that and still catches a README that no longer
+says what its example does (the model's changes have moved these numbers
+by 2.6-14%). A pattern that no longer matches its README fails too."""
+import os
+import re
+import shutil
+import subprocess
+from lmptest import LMP, MPI_ENV, check, finish, workdir
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
+NUMBER = re.compile(r"[-+]?\d[\d,]*(?:\.\d*)?(?:[eE][-+]?\d+)?")
+
+
+def run_example(folder, deck, variables=(), expect_error=False):
+    """The example's log after running `deck` in a copy of its folder."""
+    top = workdir()
+    here = os.path.join(top, "examples", folder)
+    shutil.copytree(os.path.join(ROOT, "examples", folder), here)
+    os.symlink(os.path.join(ROOT, "potentials"), os.path.join(top, "potentials"))
+    cmd = [LMP, "-in", deck, "-echo", "none", "-screen", "none", "-log", "log.test"]
+    for k, v in variables:
+        cmd += ["-var", k, str(v)]
+    p = subprocess.run(cmd, cwd=here, capture_output=True, text=True, env=MPI_ENV, timeout=600)
+    log = open(os.path.join(here, "log.test")).read()
+    ok = (p.returncode != 0) == expect_error and (("ERROR" in log) == expect_error)
+    check(f"{folder} {deck} {' '.join(f'{k}={v}' for k, v in variables)} runs"
+          + (" into its ERROR" if expect_error else ""), ok, f"exit {p.returncode}")
+    return log
+
+
+def value(text):
+    return float(text.replace(",", ""))
+
+
+def agrees(printed, stated):
+    """printed (a float) against stated (the README's digits)."""
+    s = value(stated)
+    mantissa, _, exponent = stated.replace(",", "").lower().partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    half_unit = 0.5 * 10.0 ** (int(exponent or 0) - decimals)
+    return abs(printed - s) <= max(0.01 * abs(s), half_unit)
+
+
+def words(line):
+    return " ".join(NUMBER.sub("#", line).split())
+
+
+def quoted_lines(output, source, prefixes):
+    """Each line of `source` (a file under ROOT) that starts with one of
+    `prefixes` against the printed line of the same words."""
+    text = open(os.path.join(ROOT, source)).read()
+    printed = [ln.strip() for ln in output.splitlines()]
+    quoted = [ln.strip() for ln in text.splitlines() if ln.strip().startswith(prefixes)]
+    check(f"{source} quotes printed lines ({', '.join(prefixes)})", len(quoted) > 0, f"{len(quoted)}")
+    for line in quoted:
+        same = [p for p in printed if words(p) == words(line)]
+        if len(same) > 1:    # rows of a table: the one with the same first number
+            same = [p for p in same if NUMBER.findall(p)[0] == NUMBER.findall(line)[0]]
+        if len(same) != 1:
+            check(f"{source}: printed: {line}", False, f"{len(same)} printed lines of its words")
+            continue
+        bad = [(s, p) for s, p in zip(NUMBER.findall(line), NUMBER.findall(same[0])) if not agrees(value(p), s)]
+        check(f"{source}: {line}", not bad, "printed " + same[0] if bad else "as printed")
+
+
+def stated(output, what, out_pattern, source, pattern):
+    """The numbers `pattern`'s groups find in `source` against those
+    `out_pattern`'s groups find in the output."""
+    text = open(os.path.join(ROOT, source)).read()
+    m, p = re.search(pattern, text), re.search(out_pattern, output, re.M)
+    if not m or not p:
+        check(f"{source}: {what}", False, ("README" if not m else "output") + " pattern not found")
+        return
+    pairs = list(zip(m.groups(), p.groups()))
+    check(f"{source}: {what}", all(agrees(value(q), s) for s, q in pairs),
+          ", ".join(f"states {s}, printed {q}" for s, q in pairs))
+
+
+TOP = "README.md"
+
+log = run_example("impact-demo", "in.impact")
+stated(log, "broken bonds", r"^DEMO atoms \d+, broken bonds (\d+)",
+       TOP, r"energy failure \(G_c = 10 J/m\^2\): ([\d,]+) broken bonds")
+
+log = run_example("plate-perforation", "in.perforation")
+quoted_lines(log, "examples/plate-perforation/reference_log", ("PERFORATION",))
+stated(log, "residual velocity, broken bonds, energy",
+       r"^PERFORATION residual velocity (\S+) m/s \(impact -600\), broken bonds (\d+), dissipated (\S+) J",
+       "examples/plate-perforation/README.md",
+       r"residual velocity of the sphere (\S+) m/s \(from -600\), ([\d,]+)\s+bonds broken, (\S+) J dissipated")
+stated(log, "residual velocity, broken bonds, energy",
+       r"^PERFORATION residual velocity -(\S+) m/s \(impact -600\), broken bonds (\d+), dissipated (\S+) J",
+       TOP, r"residual velocity (\S+) m/s, ([\d,]+) broken bonds, (\S+) J dissipated")
+
+log = run_example("quasi-static-crack", "in.quasi-static")
+quoted_lines(log, "examples/quasi-static-crack/README.md", ("LOAD ", "QUASI-STATIC:"))
+peak = max((ln.split() for ln in log.splitlines() if re.match(r"LOAD +\d", ln)), key=lambda w: float(w[3]))
+peak_line = f"PEAK {float(peak[3]):.3f} N at step {peak[1]}"
+stated(peak_line, "peak load and its step", r"PEAK (\S+) N at step (\d+)",
+       "examples/quasi-static-crack/README.md", r"while the load rises to (\d+) N \(step (\d+)\)")
+stated(peak_line, "peak load", r"PEAK (\S+) N", TOP, r"peak load (\d+) N")
+
+for m in ("0.5", "0"):
+    log = run_example("plate-impact-2d", "in.plate-impact", (("m", m), ("tag", f"impact_m{m}")))
+    quoted_lines(log, f"examples/plate-impact-2d/reference_log.m{m}", (f"SUMMARY m {m} ",))
+    stated(log, f"m = {m}: smallest dilatation, particles in collapse",
+           r"^SUMMARY m \S+ min_dilatation (\S+) atoms_in_collapse (\d+)",
+           "examples/plate-impact-2d/README.md", rf"\| {m} +\| (\S+) \| (\d+) \|")
+    if m == "0.5":
+        stated(log, "m = 1/2: particles in collapse", r"atoms_in_collapse (\d+)",
+               TOP, r"with m = 1/2, (\d+) particles end up closer")
+
+log = run_example("wall-impact-adaptive", "in.wall", (("adapt", 1),))
+stated(log, "adaptive steps", r"^Loop time of \S+ on \d+ procs for (\d+) steps",
+       "examples/wall-impact-adaptive/README.md", r"\| `fix pd/timestep` \(defaults\) \| ([\d,]+) ")
+stated(log, "adaptive steps", r"^Loop time of \S+ on \d+ procs for (\d+) steps", TOP, r"`fix pd/timestep`: ([\d,]+) steps")
+log = run_example("wall-impact-adaptive", "in.wall", (("adapt", 0),), expect_error=True)
+stated(log, "the fixed step's blow-up", r"^ERROR: .*is unstable at step (\d+)",
+       "examples/wall-impact-adaptive/README.md", r"\| fixed 2e-8 s \| (\d+) \|")
+
+log = run_example("crack-kink", "in.kink")
+quoted_lines(log, "examples/crack-kink/README.md", ("KINK ",))
+quasi = re.search(r"^KINK angle (\S+) degrees", log, re.M)
+log = run_example("crack-kink", "in.kink", (("load", "dynamic"),))
+stated(log, "dynamic kink angle", r"^KINK angle (\S+) degrees",
+       "examples/crack-kink/README.md", r"-var load dynamic +# dynamic.*: (\S+) degrees")
+both = f"QUASI {quasi.group(1) if quasi else 'nan'} DYNAMIC " + re.search(r"^KINK angle (\S+)", log, re.M).group(1)
+stated(both, "kink angles", r"QUASI (\S+) DYNAMIC (\S+)", TOP, r"turns by (\S+) \(quasi-static\) or (\S+) degrees \(dynamic\)")
+finish()
