@@ -99,6 +99,24 @@ def log_value(out, pattern):
     return float(m.group(1)) if m else math.nan
 
 
+def stated_value(text):
+    """A number as a README states it ("102,650", "-0.292", "9.80e-05")."""
+    return float(text.replace(",", ""))
+
+
+def agrees(printed, stated):
+    """Whether a printed number (a float) is the one a README states
+    (its digits): within 1% of it, and at least half a unit of its last
+    digit. The README's digits are one run's; fracture counts and crack
+    paths follow round-off, which another compiler or vector width
+    changes, and 1% leaves room for that."""
+    s = stated_value(stated)
+    mantissa, _, exponent = stated.replace(",", "").lower().partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    half_unit = 0.5 * 10.0 ** (int(exponent or 0) - decimals)
+    return abs(printed - s) <= max(0.01 * abs(s), half_unit)
+
+
 def fnv1a(data, h=14695981039346656037):
     """64-bit FNV-1a, the checksum of the bond store's restart records."""
     for b in data:

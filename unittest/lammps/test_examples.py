@@ -11,8 +11,8 @@ the run's:
 - numbers in prose (the example's README and the top README's table of
   examples): a pattern in the README and one in the output.
 
-Tolerance: 1% of the stated value, and at least half a unit of its last
-stated digit. A build of this source reproduces these numbers to the bit,
+Tolerance (lmptest.agrees): 1% of the stated value, and at least half a
+unit of its last stated digit. A build of this source reproduces these numbers to the bit,
 on LAMMPS 4 Jul 2026 and 29 Sep 2021 alike; broken-bond counts and crack
 paths follow round-off, which another compiler or vector width changes,
 so 1% leaves room for that and still catches a README that no longer
@@ -22,7 +22,7 @@ import os
 import re
 import shutil
 import subprocess
-from lmptest import LMP, MPI_ENV, check, finish, workdir
+from lmptest import LMP, MPI_ENV, agrees, check, finish, stated_value as value, workdir
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
 NUMBER = re.compile(r"[-+]?\d[\d,]*(?:\.\d*)?(?:[eE][-+]?\d+)?")
@@ -43,19 +43,6 @@ def run_example(folder, deck, variables=(), expect_error=False):
     check(f"{folder} {deck} {' '.join(f'{k}={v}' for k, v in variables)} runs"
           + (" into its ERROR" if expect_error else ""), ok, f"exit {p.returncode}")
     return log
-
-
-def value(text):
-    return float(text.replace(",", ""))
-
-
-def agrees(printed, stated):
-    """printed (a float) against stated (the README's digits)."""
-    s = value(stated)
-    mantissa, _, exponent = stated.replace(",", "").lower().partition("e")
-    decimals = len(mantissa.partition(".")[2])
-    half_unit = 0.5 * 10.0 ** (int(exponent or 0) - decimals)
-    return abs(printed - s) <= max(0.01 * abs(s), half_unit)
 
 
 def words(line):
