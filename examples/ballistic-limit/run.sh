@@ -1,6 +1,6 @@
 #!/bin/sh
 # The ballistic-limit campaign: 15 impacts from one target on 2 partitions
-# (a few minutes on 2 cores), the Lambert-Jonas fit and the pictures.
+# (about 35 s on 2 cores), the Lambert-Jonas fit and the pictures.
 #   ./run.sh [path/to/lmp] [partitions]
 set -e
 cd "$(dirname "$0")"

@@ -223,7 +223,9 @@ void FixPDBonds::post_neighbor()
 // type whose atoms have almost no bonds would run as free particles (a
 // horizon below the real spacing: wrong units, volume or lattice), so it is
 // an error; two types that touch but share no bonds get a warning unless
-// the user said so ('nobond').
+// the user said so ('nobond'), and so do a type that fails and one that
+// does not when only the mixing rules bond them (an impactor glued to its
+// target).
 void FixPDBonds::report_bonds_by_type(const std::vector<bigint> &touching_mine)
 {
   static constexpr double MIN_BONDS_PER_ATOM = 3.0;
@@ -262,6 +264,13 @@ void FixPDBonds::report_bonds_by_type(const std::vector<bigint> &touching_mine)
                        "horizon) but share no bonds (their horizon {} is below the spacing); to "
                        "keep them unbonded write 'pair_coeff {} {} nobond'", t, u,
                        spec.horizon(t, u), t, u);
+      if (counts[t * nt + u] && spec.is_unnamed_mixed(t, u) && comm->me == 0)
+        error->warning(FLERR, "Fix pd/bonds: types {} and {} share {} bonds that no 'pair_coeff {} {}' line "
+                       "names, one type failing and the other not: the mixing rules join them into one "
+                       "body. For bodies that only touch write 'pair_coeff {} {} nobond'; to keep the bonds, "
+                       "name their interface ('pair_coeff {} {} horizon H', and 'fail ...' for how they "
+                       "break; under pair_style hybrid the style's name follows the types)",
+                       t, u, counts[t * nt + u], t, u, t, u, t, u);
     }
   }
   if (comm->me == 0)

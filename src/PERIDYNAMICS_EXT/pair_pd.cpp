@@ -712,6 +712,11 @@ PDFamilySpec PairPD::family_spec() const
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = 1; j <= atom->ntypes; j++) spec.horizons[(size_t) i * (atom->ntypes + 1) + j] = horizon(i, j);
   spec.smallest = smallest_horizon();
+  spec.unnamed_mixed.assign(spec.horizons.size(), 0);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++)
+      spec.unnamed_mixed[(size_t) i * (atom->ntypes + 1) + j] = i != j && !setflag[MIN(i, j)][MAX(i, j)] &&
+          setflag[i][i] && setflag[j][j] && law_of(coef[ifail][i][i]).breaks() != law_of(coef[ifail][j][j]).breaks();
   if (partial_volumes()) {
     // the cell: side a from the mean of the two volumes (symmetric in the bond)
     const int d = dim();

@@ -52,8 +52,17 @@ struct PDFamilySpec {
   double beyond = 0.0;            // how far past the horizon a bond may reach (partial cells)
   Fraction fraction;              // null: point quadrature (a bond iff r <= horizon)
   Weight weight;                  // used only when the bonds carry weights
+  // (ntypes+1)^2: 1 for two types whose bonds only the mixing rules give
+  // (no pair_coeff I J line) while one of them fails and the other not:
+  // an impactor and its target, glued if they start within a horizon; the
+  // store warns when they share bonds (empty: none)
+  std::vector<char> unnamed_mixed;
 
   double horizon(int i, int j) const { return horizons[(size_t) i * (ntypes + 1) + j]; }
+  bool is_unnamed_mixed(int i, int j) const
+  {
+    return !unnamed_mixed.empty() && unnamed_mixed[(size_t) i * (ntypes + 1) + j];
+  }
   // the longest reference distance of a bond between the types (0: none)
   double reach(int i, int j) const
   {

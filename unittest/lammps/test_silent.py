@@ -2,7 +2,10 @@
 
 - Bonds per atom are reported per type; a type without bonds (a horizon
   below the real spacing: wrong lattice, volume or units) is an ERROR; two
-  types that touch but share no bonds get a WARNING unless 'nobond' says so.
+  types that touch but share no bonds get a WARNING unless 'nobond' says so;
+  so do a failing type and one that does not fail when only the mixing
+  rules bond them (an impactor glued to its target), unless a pair_coeff
+  I J line names their bonds ('nobond' or an interface).
 - The bond families survive a run with another pair style (pair_style none).
 - A restart written before the first run keeps fix pd/precrack's cut.
 - A 'run 0' loop with displace_atoms (quasi-static loading) books every bond
@@ -50,6 +53,18 @@ check("'nobond' keeps them apart without a warning, and the log says 0 bonds bet
 out, _ = run(TWO + f"pair_style pd/ordinary\npair_coeff * * E 1e9 nu 0.25 horizon {H}\nrun 0\n", d)
 check("mixed types bond across the interface (the count is logged)",
       "bonds between types: 1-2" in out and "bonds between types: 1-2 0;" not in out)
+
+# an elastic impactor (type 2) within a horizon of a breaking target (type 1)
+GLUED = TWO + f"pair_style pd/ordinary\npair_coeff 1 1 E 1e9 nu 0.25 horizon {H} fail stretch s0 0.01\n" \
+    f"pair_coeff 2 2 E 2e9 nu 0.25 horizon {H}\n"
+out, _ = run(GLUED + "run 0\n", d)
+check("a failing and an elastic type bonded by the mixing rules alone: a WARNING with the count and 'nobond'",
+      re.search(r"WARNING: Fix pd/bonds: types 1 and 2 share \d+ bonds that no 'pair_coeff 1 2' line names", out)
+      is not None and "'pair_coeff 1 2 nobond'" in out)
+for line, what in (("pair_coeff 1 2 nobond", "'nobond'"), (f"pair_coeff 1 2 horizon {H}", "a named interface")):
+    out, _ = run(GLUED + line + "\nrun 0\n", d)
+    check(f"... {what} says what is meant: no warning", "pd/bonds: bonds per atom" in out
+          and "WARNING: Fix pd/bonds" not in out)
 
 # --- bonds near half a periodic box ----------------------------------------
 # A bond that reaches past half the periodic box jumps to another image at
