@@ -85,9 +85,8 @@ accuracy: build
 validate: build
 	python3 tools/accuracy/run.py --mode short --lmp $(LMP) --exact $(BUILD_DIR)/pd_exact --out $(BUILD_DIR)/accuracy-short
 	PDEXT_LMP=$(LMP) PDEXT_VALIDATE=1 python3 unittest/lammps/test_fracture.py
-	./examples/riemann-2d/run.sh $(LMP)
+	PDEXT_LMP=$(LMP) PDEXT_VALIDATE=1 python3 unittest/lammps/test_examples.py
 	for t in unittest/stability/test_*.py; do PDEXT_LMP=$(LMP) PDEXT_VALIDATE=1 python3 $$t || exit 1; done
-	./examples/plate-impact-2d/run.sh $(LMP)
 	./examples/fragmentation-tube/run.sh $(LMP)
 	@# valgrind runs no AVX-512 code: its decks take a portable build of the same sources
 	$(MAKE) build BUILD_DIR=$(BUILD_DIR)/portable PORTABLE=1

@@ -17,11 +17,15 @@ on LAMMPS 4 Jul 2026 and 29 Sep 2021 alike; broken-bond counts and crack
 paths follow round-off, which another compiler or vector width changes,
 so 1% leaves room for that and still catches a README that no longer
 says what its example does (the model's changes have moved these numbers
-by 2.6-14%). A pattern that no longer matches its README fails too."""
+by 2.6-14%). A pattern that no longer matches its README fails too.
+
+PDEXT_VALIDATE=1 (make validate) adds the examples of a minute and more:
+the Riemann problem and the ballistic-limit campaign with its fit."""
 import os
 import re
 import shutil
 import subprocess
+import sys
 from lmptest import LMP, MPI_ENV, agrees, check, finish, stated_value as value, workdir
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
@@ -130,4 +134,44 @@ stated(log, "dynamic kink angle", r"^KINK angle (\S+) degrees",
        "examples/crack-kink/README.md", r"-var load dynamic +# dynamic.*: (\S+) degrees")
 both = f"QUASI {quasi.group(1) if quasi else 'nan'} DYNAMIC " + re.search(r"^KINK angle (\S+)", log, re.M).group(1)
 stated(both, "kink angles", r"QUASI (\S+) DYNAMIC (\S+)", TOP, r"turns by (\S+) \(quasi-static\) or (\S+) degrees \(dynamic\)")
+# --- make validate: the examples of a minute and more -----------------------
+if os.environ.get("PDEXT_VALIDATE"):
+    for m, shown in (("0.5", "1/2"), ("0", "0  ")):
+        log = run_example("riemann-2d", "in.riemann", (("m", m), ("nh", 5), ("steps", 1500), ("tag", f"riemann_m{m}")))
+        stated(log, f"m = {shown.strip()}: overlap and close particles",
+               r"^RIEMANN m \S+ overlap_m (\S+) close_particles (\d+)",
+               "examples/riemann-2d/README.md", rf"\| {re.escape(shown)} \| ([-+]?[\d.]+) m[^|]*\| (\d+) \|")
+        if m == "0.5":
+            stated(log, "m = 1/2: overlap and close particles", r"overlap_m (\S+) close_particles (\d+)",
+                   TOP, r"m = 1/2 has interpenetrated by (\S+) m \((\d+) particles")
+
+    # the ballistic-limit campaign (15 impacts on 2 partitions) and its fit
+    top = workdir()
+    here = os.path.join(top, "examples", "ballistic-limit")
+    shutil.copytree(os.path.join(ROOT, "examples", "ballistic-limit"), here,
+                    ignore=shutil.ignore_patterns("campaign.out", "damage*", "*.png"))
+    os.symlink(os.path.join(ROOT, "potentials"), os.path.join(top, "potentials"))
+    os.symlink(os.path.join(ROOT, "tools"), os.path.join(top, "tools"))
+    p = subprocess.run(["python3", "../../tools/campaign/pd_campaign.py", "campaign.ini", "-p", "2", "--lmp", LMP],
+                       cwd=here, capture_output=True, text=True, env=MPI_ENV, timeout=1800)
+    check("ballistic-limit: the campaign runs", p.returncode == 0,
+          f"exit {p.returncode}" + ("" if p.returncode == 0 else ": " + p.stdout[-300:] + p.stderr[-300:]))
+    sys.path.insert(0, here)
+    import ballistic_limit as bl
+    points, undecided = bl.read_cases(os.path.join(here, "campaign.out", "results.csv"))
+    check("ballistic-limit: every case decided", not undecided, f"undecided: {undecided}")
+    readme = open(os.path.join(ROOT, "examples/ballistic-limit/README.md")).read()
+    vs = re.search(r"^\| v \(m/s\) \|(.*)\|$", readme, re.M)
+    rs = re.search(r"^\| v_r \(m/s\) \|(.*)\|$", readme, re.M)
+    table = dict(zip((float(v) for v in vs.group(1).split("|")), (r.strip() for r in rs.group(1).split("|")))) \
+        if vs and rs else {}
+    check("ballistic-limit README: its table has a residual velocity for each case",
+          sorted(table) == [v for v, _ in points], f"{sorted(table)}")
+    for v, r in points:
+        if v in table:
+            check(f"ballistic-limit README: v {v:g} m/s, residual {table[v]} m/s", agrees(r, table[v]), f"ran {r:.2f}")
+    a, pw, vbl, rms, _ = bl.fit(points)
+    fit = f"FIT v_bl = {vbl:.1f} m/s, a = {a:.4f}, p = {pw:.3f}, rms {rms:.2f} m/s"
+    stated(fit, "the Lambert-Jonas fit", r"v_bl = (\S+) m/s, a = (\S+), p = (\S+), rms (\S+) m/s",
+           "examples/ballistic-limit/README.md", r"\*\*v_bl = (\S+) m/s\*\*, a = (\S+), p = (\S+), rms (\S+) m/s")
 finish()
