@@ -29,7 +29,8 @@ import sys
 from lmptest import LMP, MPI_ENV, agrees, check, finish, stated_value as value, workdir
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
-NUMBER = re.compile(r"[-+]?\d[\d,]*(?:\.\d*)?(?:[eE][-+]?\d+)?")
+# a number as printed or stated: "102650", "102,650" (thousands), "-0.292", "9.80e-05"
+NUMBER = re.compile(r"[-+]?(?:\d{1,3}(?:,\d{3})+(?!\d)|\d+)(?:\.\d*)?(?:[eE][-+]?\d+)?")
 
 
 def run_example(folder, deck, variables=(), expect_error=False):
@@ -49,25 +50,48 @@ def run_example(folder, deck, variables=(), expect_error=False):
     return log
 
 
-def words(line):
-    return " ".join(NUMBER.sub("#", line).split())
+def run_campaign(folder):
+    """The results.csv of the example's campaign (campaign.ini on 2
+    partitions), run in a copy of its folder."""
+    top = workdir()
+    here = os.path.join(top, "examples", folder)
+    shutil.copytree(os.path.join(ROOT, "examples", folder), here,
+                    ignore=shutil.ignore_patterns("campaign.out", "damage*", "*.png"))
+    for d in ("potentials", "tools"):
+        os.symlink(os.path.join(ROOT, d), os.path.join(top, d))
+    p = subprocess.run([sys.executable, "../../tools/campaign/pd_campaign.py", "campaign.ini", "-p", "2",
+                        "--lmp", LMP], cwd=here, capture_output=True, text=True, env=MPI_ENV, timeout=1800)
+    check(f"{folder}: the campaign runs", p.returncode == 0,
+          f"exit {p.returncode}" + ("" if p.returncode == 0 else ": " + p.stdout[-300:] + p.stderr[-300:]))
+    return os.path.join(here, "campaign.out", "results.csv")
 
 
-def quoted_lines(output, source, prefixes):
+def numbers(line, csv):
+    return line.split(",") if csv else NUMBER.findall(line)
+
+
+def words(line, csv):
+    return "csv row" if csv else " ".join(NUMBER.sub("#", line).split())
+
+
+def quoted_lines(output, source, prefixes, csv=False):
     """Each line of `source` (a file under ROOT) that starts with one of
-    `prefixes` against the printed line of the same words."""
+    `prefixes` against the printed line of the same words (csv: rows of
+    comma-separated numbers)."""
     text = open(os.path.join(ROOT, source)).read()
     printed = [ln.strip() for ln in output.splitlines()]
     quoted = [ln.strip() for ln in text.splitlines() if ln.strip().startswith(prefixes)]
     check(f"{source} quotes printed lines ({', '.join(prefixes)})", len(quoted) > 0, f"{len(quoted)}")
     for line in quoted:
-        same = [p for p in printed if words(p) == words(line)]
+        same = [p for p in printed if words(p, csv) == words(line, csv)]
         if len(same) > 1:    # rows of a table: the one with the same first number
-            same = [p for p in same if NUMBER.findall(p)[0] == NUMBER.findall(line)[0]]
+            same = [p for p in same if numbers(p, csv)[:1] == numbers(line, csv)[:1]]
         if len(same) != 1:
             check(f"{source}: printed: {line}", False, f"{len(same)} printed lines of its words")
             continue
-        bad = [(s, p) for s, p in zip(NUMBER.findall(line), NUMBER.findall(same[0])) if not agrees(value(p), s)]
+        stated_numbers, printed_numbers = numbers(line, csv), numbers(same[0], csv)
+        bad = len(stated_numbers) != len(printed_numbers) or \
+            any(not agrees(value(p), s) for s, p in zip(stated_numbers, printed_numbers))
         check(f"{source}: {line}", not bad, "printed " + same[0] if bad else "as printed")
 
 
@@ -134,6 +158,11 @@ stated(log, "dynamic kink angle", r"^KINK angle (\S+) degrees",
        "examples/crack-kink/README.md", r"-var load dynamic +# dynamic.*: (\S+) degrees")
 both = f"QUASI {quasi.group(1) if quasi else 'nan'} DYNAMIC " + re.search(r"^KINK angle (\S+)", log, re.M).group(1)
 stated(both, "kink angles", r"QUASI (\S+) DYNAMIC (\S+)", TOP, r"turns by (\S+) \(quasi-static\) or (\S+) degrees \(dynamic\)")
+results = open(run_campaign("campaign-basics")).read()
+speeds = tuple(f"{row.split(',')[0]}," for row in results.splitlines()[1:])
+for source in ("examples/campaign-basics/README.md", "examples/campaign-basics/reference.csv"):
+    quoted_lines(results, source, speeds, csv=True)
+
 # --- make validate: the examples of a minute and more -----------------------
 if os.environ.get("PDEXT_VALIDATE"):
     for m, shown in (("0.5", "1/2"), ("0", "0  ")):
@@ -146,19 +175,10 @@ if os.environ.get("PDEXT_VALIDATE"):
                    TOP, r"m = 1/2 has interpenetrated by (\S+) m \((\d+) particles")
 
     # the ballistic-limit campaign (15 impacts on 2 partitions) and its fit
-    top = workdir()
-    here = os.path.join(top, "examples", "ballistic-limit")
-    shutil.copytree(os.path.join(ROOT, "examples", "ballistic-limit"), here,
-                    ignore=shutil.ignore_patterns("campaign.out", "damage*", "*.png"))
-    os.symlink(os.path.join(ROOT, "potentials"), os.path.join(top, "potentials"))
-    os.symlink(os.path.join(ROOT, "tools"), os.path.join(top, "tools"))
-    p = subprocess.run(["python3", "../../tools/campaign/pd_campaign.py", "campaign.ini", "-p", "2", "--lmp", LMP],
-                       cwd=here, capture_output=True, text=True, env=MPI_ENV, timeout=1800)
-    check("ballistic-limit: the campaign runs", p.returncode == 0,
-          f"exit {p.returncode}" + ("" if p.returncode == 0 else ": " + p.stdout[-300:] + p.stderr[-300:]))
-    sys.path.insert(0, here)
+    results = run_campaign("ballistic-limit")
+    sys.path.insert(0, os.path.join(ROOT, "examples", "ballistic-limit"))
     import ballistic_limit as bl
-    points, undecided = bl.read_cases(os.path.join(here, "campaign.out", "results.csv"))
+    points, undecided = bl.read_cases(results)
     check("ballistic-limit: every case decided", not undecided, f"undecided: {undecided}")
     readme = open(os.path.join(ROOT, "examples/ballistic-limit/README.md")).read()
     vs = re.search(r"^\| v \(m/s\) \|(.*)\|$", readme, re.M)
