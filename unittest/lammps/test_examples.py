@@ -158,6 +158,7 @@ stated(log, "dynamic kink angle", r"^KINK angle (\S+) degrees",
        "examples/crack-kink/README.md", r"-var load dynamic +# dynamic.*: (\S+) degrees")
 both = f"QUASI {quasi.group(1) if quasi else 'nan'} DYNAMIC " + re.search(r"^KINK angle (\S+)", log, re.M).group(1)
 stated(both, "kink angles", r"QUASI (\S+) DYNAMIC (\S+)", TOP, r"turns by (\S+) \(quasi-static\) or (\S+) degrees \(dynamic\)")
+
 results = open(run_campaign("campaign-basics")).read()
 speeds = tuple(f"{row.split(',')[0]}," for row in results.splitlines()[1:])
 for source in ("examples/campaign-basics/README.md", "examples/campaign-basics/reference.csv"):
