@@ -20,7 +20,8 @@ says what its example does (the model's changes have moved these numbers
 by 2.6-14%). A pattern that no longer matches its README fails too.
 
 PDEXT_VALIDATE=1 (make validate) adds the examples of a minute and more:
-the Riemann problem and the ballistic-limit campaign with its fit."""
+the Riemann problem, the ballistic-limit campaign with its fit and the 2D
+fragmentation study's table."""
 import os
 import re
 import shutil
@@ -50,20 +51,20 @@ def run_example(folder, deck, variables=(), expect_error=False):
     return log
 
 
-def run_campaign(folder):
-    """The results.csv of the example's campaign (campaign.ini on 2
-    partitions), run in a copy of its folder."""
+def run_campaign(folder, ini="campaign.ini", out="campaign.out"):
+    """The results.csv of the example's campaign (`ini` on 2 partitions,
+    writing into `out`), run in a copy of its folder."""
     top = workdir()
     here = os.path.join(top, "examples", folder)
     shutil.copytree(os.path.join(ROOT, "examples", folder), here,
                     ignore=shutil.ignore_patterns("campaign.out", "damage*", "*.png"))
     for d in ("potentials", "tools"):
         os.symlink(os.path.join(ROOT, d), os.path.join(top, d))
-    p = subprocess.run([sys.executable, "../../tools/campaign/pd_campaign.py", "campaign.ini", "-p", "2",
+    p = subprocess.run([sys.executable, "../../tools/campaign/pd_campaign.py", ini, "-p", "2",
                         "--lmp", LMP], cwd=here, capture_output=True, text=True, env=MPI_ENV, timeout=1800)
-    check(f"{folder}: the campaign runs", p.returncode == 0,
+    check(f"{folder}: the campaign {ini} runs", p.returncode == 0,
           f"exit {p.returncode}" + ("" if p.returncode == 0 else ": " + p.stdout[-300:] + p.stderr[-300:]))
-    return os.path.join(here, "campaign.out", "results.csv")
+    return os.path.join(here, out, "results.csv")
 
 
 def numbers(line, csv):
@@ -195,4 +196,18 @@ if os.environ.get("PDEXT_VALIDATE"):
     fit = f"FIT v_bl = {vbl:.1f} m/s, a = {a:.4f}, p = {pw:.3f}, rms {rms:.2f} m/s"
     stated(fit, "the Lambert-Jonas fit", r"v_bl = (\S+) m/s, a = (\S+), p = (\S+), rms (\S+) m/s",
            "examples/ballistic-limit/README.md", r"\*\*v_bl = (\S+) m/s\*\*, a = (\S+), p = (\S+), rms (\S+) m/s")
+
+    # the 2D fragmentation study (24 cases): the README's table, 2D columns
+    results = run_campaign("fragmentation-tube", "campaign-2d.ini", "ring.out")
+    sys.path.insert(0, os.path.join(ROOT, "examples", "fragmentation-tube"))
+    import report as frag
+    rows = frag.read_rows(os.path.dirname(results))
+    readme = open(os.path.join(ROOT, "examples/fragmentation-tube/README.md")).read()
+    for n in frag.SPACINGS:
+        row = re.search(rf"^\| {frag.dx(n):.2f} \| (\S+), (\S+) \((\S+) - (\S+)\) \|[^|]*\|[^|]*\| (\S+), (\S+) \|",
+                        readme, re.M)
+        ran = [*frag.pooled(rows, 600, n)[:4], *frag.pooled(rows, 200, n)[:2]]
+        check(f"fragmentation-tube README: dx {frag.dx(n):.2f} mm, 2D: fragments, mean, seeds' range at 600 m/s; "
+              "fragments, mean at 200 m/s", row is not None and all(agrees(r, s) for s, r in zip(row.groups(), ran)),
+              ", ".join(f"states {s}, ran {r:.2f}" for s, r in zip(row.groups(), ran)) if row else "row not found")
 finish()
