@@ -714,9 +714,11 @@ PDFamilySpec PairPD::family_spec() const
   spec.smallest = smallest_horizon();
   spec.unnamed_mixed.assign(spec.horizons.size(), 0);
   for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = 1; j <= atom->ntypes; j++)
-      spec.unnamed_mixed[(size_t) i * (atom->ntypes + 1) + j] = i != j && !setflag[MIN(i, j)][MAX(i, j)] &&
-          setflag[i][i] && setflag[j][j] && law_of(coef[ifail][i][i]).breaks() != law_of(coef[ifail][j][j]).breaks();
+    for (int j = 1; j <= atom->ntypes; j++) {
+      const bool named = setflag[MIN(i, j)][MAX(i, j)], both_ours = setflag[i][i] && setflag[j][j];
+      const bool one_fails = law_of(coef[ifail][i][i]).breaks() != law_of(coef[ifail][j][j]).breaks();
+      spec.unnamed_mixed[(size_t) i * (atom->ntypes + 1) + j] = i != j && !named && both_ours && one_fails;
+    }
   if (partial_volumes()) {
     // the cell: side a from the mean of the two volumes (symmetric in the bond)
     const int d = dim();
