@@ -12,12 +12,13 @@ the run's:
   examples): a pattern in the README and one in the output.
 
 Tolerance (lmptest.agrees): 1% of the stated value, and at least half a
-unit of its last stated digit. A build of this source reproduces these numbers to the bit,
-on LAMMPS 4 Jul 2026 and 29 Sep 2021 alike; broken-bond counts and crack
-paths follow round-off, which another compiler or vector width changes,
-so 1% leaves room for that and still catches a README that no longer
-says what its example does (the model's changes have moved these numbers
-by 2.6-14%). A pattern that no longer matches its README fails too.
+unit of its last stated digit. A build of this source reproduces these
+numbers to the bit, on LAMMPS 4 Jul 2026 and 29 Sep 2021 alike;
+broken-bond counts and crack paths follow round-off, which another
+compiler or vector width changes, so 1% leaves room for that and still
+catches a README that no longer says what its example does (the model's
+changes have moved these numbers by 2.6-14%). A pattern that no longer
+matches its README fails too.
 
 PDEXT_VALIDATE=1 (make validate) adds the examples of a minute and more:
 the Riemann problem, the ballistic-limit campaign with its fit and the 2D
