@@ -21,8 +21,9 @@ changes have moved these numbers by 2.6-14%). A pattern that no longer
 matches its README fails too.
 
 PDEXT_VALIDATE=1 (make validate) adds the examples of a minute and more:
-the Riemann problem, the ballistic-limit campaign with its fit and the 2D
-fragmentation study's table."""
+the Riemann problem, the edge-on impact, the Taylor impact's classical
+run at T14's resolution, the ballistic-limit campaign with its fit and
+the 2D fragmentation study's table."""
 import os
 import re
 import shutil
@@ -176,6 +177,28 @@ if os.environ.get("PDEXT_VALIDATE"):
         if m == "0.5":
             stated(log, "m = 1/2: overlap and close particles", r"overlap_m (\S+) close_particles (\d+)",
                    TOP, r"m = 1/2 has interpenetrated by (\S+) m \((\d+) particles")
+
+    # edge-on impact (T14 6.2.1), both speeds as run.sh runs them
+    for v in (15, 35):
+        log = run_example("edge-on-impact", "in.edge-on", (("v0", v), ("steps", 12000), ("images", 4000)))
+        if v == 15:
+            quoted_lines(log, "examples/edge-on-impact/README.md", ("EDGE-ON v0 15 ",))
+            stated(log, "15 m/s: crack extension and energy per area",
+                   r"^EDGE-ON v0 15 .*crack extension (\S+) mm.*, (\S+) J/m\^2 per crack area",
+                   TOP, r"at 15 m/s one mode-I crack runs (\S+) mm and dissipates (\S+) J/m\^2")
+        else:
+            stated(log, "35 m/s: dissipated energy and its share off the notch plane",
+                   r"^EDGE-ON v0 35 .*dissipated (\S+) J \((\S+)% farther",
+                   "examples/edge-on-impact/README.md", r"(\S+) J, 12 times the energy at 15 m/s, of which (\S+)% lies")
+
+    # the Taylor impact, classical correspondence at T14's D2 resolution
+    log = run_example("taylor-impact", "in.taylor", (("strain", "classical"), ("tag", "taylor_classical")))
+    stated(log, "classical D2: length, face radius, peak plastic strain, energy ratio",
+           r"^TAYLOR strain classical .*length_mm (\S+) radius_mm (\S+) epmax (\S+) .*energy_ratio (\S+)",
+           "examples/taylor-impact/README.md", r"(?m)^\| 0.395 mm \(17,679\) \| (\S+) \| (\S+) \| (\S+) \| (\S+) \|")
+    stated(log, "classical D2: length, face radius, peak plastic strain",
+           r"^TAYLOR strain classical .*length_mm (\S+) radius_mm (\S+) epmax (\S+)",
+           TOP, r"classical correspondence ends (\S+) mm long, face radius (\S+) mm, peak plastic strain (\S+) ")
 
     # the ballistic-limit campaign (15 impacts on 2 partitions) and its fit
     results = run_campaign("ballistic-limit")
