@@ -1,8 +1,8 @@
 """The short examples print what their READMEs say they print.
 
 Each example runs as its run.sh runs it, from a copy of its folder beside
-a link to potentials/ (so its relative paths hold and the source tree
-stays clean). Then every number a README states about it is compared with
+links to potentials/ and tools/ (so its relative paths hold and the
+source tree stays clean). Then every number a README states about it is compared with
 the run's:
 - lines quoted as printed (a README's output block, a reference log):
   each is paired with the printed line of the same words (by its first
@@ -36,12 +36,21 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), 
 NUMBER = re.compile(r"[-+]?(?:\d{1,3}(?:,\d{3})+(?!\d)|\d+)(?:\.\d*)?(?:[eE][-+]?\d+)?")
 
 
-def run_example(folder, deck, variables=(), expect_error=False):
-    """The example's log after running `deck` in a copy of its folder."""
+def copy_example(folder):
+    """A copy of the example's folder (without earlier runs' output), beside
+    links to potentials/ and tools/ as in the repository: its path."""
     top = workdir()
     here = os.path.join(top, "examples", folder)
-    shutil.copytree(os.path.join(ROOT, "examples", folder), here)
-    os.symlink(os.path.join(ROOT, "potentials"), os.path.join(top, "potentials"))
+    shutil.copytree(os.path.join(ROOT, "examples", folder), here,
+                    ignore=shutil.ignore_patterns("*.out", "damage*", "*.png", "log.*"))
+    for d in ("potentials", "tools"):
+        os.symlink(os.path.join(ROOT, d), os.path.join(top, d))
+    return here
+
+
+def run_example(folder, deck, variables=(), expect_error=False):
+    """The example's log after running `deck` in a copy of its folder."""
+    here = copy_example(folder)
     cmd = [LMP, "-in", deck, "-echo", "none", "-screen", "none", "-log", "log.test"]
     for k, v in variables:
         cmd += ["-var", k, str(v)]
@@ -56,12 +65,7 @@ def run_example(folder, deck, variables=(), expect_error=False):
 def run_campaign(folder, ini="campaign.ini", out="campaign.out"):
     """The results.csv of the example's campaign (`ini` on 2 partitions,
     writing into `out`), run in a copy of its folder."""
-    top = workdir()
-    here = os.path.join(top, "examples", folder)
-    shutil.copytree(os.path.join(ROOT, "examples", folder), here,
-                    ignore=shutil.ignore_patterns("campaign.out", "damage*", "*.png"))
-    for d in ("potentials", "tools"):
-        os.symlink(os.path.join(ROOT, d), os.path.join(top, d))
+    here = copy_example(folder)
     p = subprocess.run([sys.executable, "../../tools/campaign/pd_campaign.py", ini, "-p", "2",
                         "--lmp", LMP], cwd=here, capture_output=True, text=True, env=MPI_ENV, timeout=1800)
     check(f"{folder}: the campaign {ini} runs", p.returncode == 0,
